@@ -1,0 +1,25 @@
+# Every dependency comes from Debian 12 packages (scripts/install-deps.sh); nothing is downloaded.
+find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+find_package(Boost 1.74 REQUIRED)
+find_package(ompl 1.5 REQUIRED)  # config file is omplConfig.cmake (lower case)
+find_package(fcl 0.7 REQUIRED)
+find_package(urdfdom REQUIRED)
+find_package(tinyxml2 REQUIRED)
+find_package(assimp REQUIRED)
+find_package(yaml-cpp REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(nlohmann_json 3 REQUIRED)
+find_package(Bullet REQUIRED)  # CMake's FindBullet module (float build)
+find_package(Threads REQUIRED)
+
+# OMPL 1.5 defines variables only; link libompl.so alone (its list names boost libraries we do not need).
+list(GET OMPL_LIBRARIES 0 ROPRAS_OMPL_CORE_LIB)
+add_library(ropras_ompl_iface INTERFACE)
+target_include_directories(ropras_ompl_iface SYSTEM INTERFACE ${OMPL_INCLUDE_DIRS})
+target_link_libraries(ropras_ompl_iface INTERFACE ${ROPRAS_OMPL_CORE_LIB} Boost::headers Eigen3::Eigen)
+set_target_properties(ropras_ompl_iface PROPERTIES EXPORT_NAME ompl_iface)
+install(TARGETS ropras_ompl_iface EXPORT roprasTargets)
+
+add_library(ropras_bullet_iface INTERFACE)
+target_include_directories(ropras_bullet_iface SYSTEM INTERFACE ${BULLET_INCLUDE_DIRS})
+target_link_libraries(ropras_bullet_iface INTERFACE ${BULLET_LIBRARIES})

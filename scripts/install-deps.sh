@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs everything ropras needs to build and test, from Debian 12 packages only. Run as root.
+set -euo pipefail
+export DEBIAN_FRONTEND=noninteractive
+packages=(
+  build-essential cmake git clang-format
+  libompl-dev libfcl-dev liburdfdom-dev libtinyxml2-dev libassimp-dev libbullet-dev libeigen3-dev
+  libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
+  libgtest-dev libbenchmark-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  apt-get update
+  apt-get install -y --no-install-recommends "${missing[@]}"
+fi
