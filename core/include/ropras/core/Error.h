@@ -14,9 +14,7 @@ namespace ropras
     class Error : public std::runtime_error
     {
     public:
-        explicit Error(const std::string &message) : std::runtime_error(message)
-        {
-        }
+        explicit Error(const std::string &message) : std::runtime_error(message) {}
     };
 }  // namespace ropras
 

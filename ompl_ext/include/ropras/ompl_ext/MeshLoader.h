@@ -21,8 +21,7 @@ namespace ropras::ompl_ext
     /** \brief Resolve a URDF mesh filename: `package://pkg/rest` and relative paths are looked up against
         \a baseDir (the URDF's folder) and its parents; `file://` and absolute paths are taken as they are.
         Throws ropras::Error naming \a urdfSource and the filename when nothing exists. */
-    std::string resolveMeshPath(const std::string &filename, const std::string &baseDir,
-                                const std::string &urdfSource);
+    std::string resolveMeshPath(const std::string &filename, const std::string &baseDir, const std::string &urdfSource);
 }  // namespace ropras::ompl_ext
 
 #endif

@@ -48,7 +48,7 @@ namespace ropras::ompl_ext
         int parentLink{-1};  ///< index into RobotModel::links()
         int childLink{-1};
         Eigen::Isometry3d origin{Eigen::Isometry3d::Identity()};  ///< parent link frame -> joint frame
-        Eigen::Vector3d axis{Eigen::Vector3d::UnitZ()};            ///< unit axis in the joint frame
+        Eigen::Vector3d axis{Eigen::Vector3d::UnitZ()};           ///< unit axis in the joint frame
         int variable{-1};     ///< planning-variable index, or -1 when the joint is fixed or held
         double heldValue{0};  ///< value used when the joint is movable but not planned
     };
@@ -57,8 +57,8 @@ namespace ropras::ompl_ext
     struct Link
     {
         std::string name;
-        int parentJoint{-1};  ///< index into urdfJoints(), -1 for the root link
-        int frame{-1};        ///< compiled frame that carries this link rigidly
+        int parentJoint{-1};                                       ///< index into urdfJoints(), -1 for the root link
+        int frame{-1};                                             ///< compiled frame that carries this link rigidly
         Eigen::Isometry3d inFrame{Eigen::Isometry3d::Identity()};  ///< link frame expressed in that frame
     };
 
@@ -101,6 +101,8 @@ namespace ropras::ompl_ext
         Eigen::Vector3d extents{Eigen::Vector3d::Zero()};         ///< box full extents
         Eigen::Vector3d scale{Eigen::Vector3d::Ones()};           ///< mesh
         std::string meshPath;                                     ///< mesh, resolved absolute path
+        /// upper bound (m) on how far this element's spheres reach beyond it (0 for spheres; see Spherizer)
+        double coverProtrusion{0.0};
     };
 
     /** \brief A link that has collision geometry: its spheres (contiguous) and a bounding sphere. */
@@ -113,6 +115,15 @@ namespace ropras::ompl_ext
         int sphereCount{0};
         Eigen::Vector3d boundCenterInFrame{Eigen::Vector3d::Zero()};  ///< encloses all the link's spheres
         double boundRadius{0.0};
+    };
+
+    /** \brief Options of RobotModel::fromUrdfFile / fromUrdfString (also reachable as RobotModel::Options). */
+    struct RobotModelOptions
+    {
+        std::vector<std::string> planningJoints;                    ///< empty: all movable joints in URDF order
+        std::map<std::string, double> heldJointValues;              ///< values of movable joints not planned
+        Eigen::Isometry3d basePose{Eigen::Isometry3d::Identity()};  ///< root link pose in the world
+        SpherizerOptions spherizer;
     };
 
     /** \brief Immutable robot description for collision checking, loaded from URDF (+ SRDF) at run time.
@@ -128,13 +139,8 @@ namespace ropras::ompl_ext
     class RobotModel
     {
     public:
-        struct Options
-        {
-            std::vector<std::string> planningJoints;      ///< empty: all movable joints in URDF order
-            std::map<std::string, double> heldJointValues;  ///< values of movable joints not planned
-            Eigen::Isometry3d basePose{Eigen::Isometry3d::Identity()};  ///< root link pose in the world
-            SpherizerOptions spherizer;
-        };
+        /// loading options (defined outside the class so it can be a default argument with member initializers)
+        using Options = RobotModelOptions;
 
         static std::shared_ptr<const RobotModel> fromUrdfFile(const std::string &urdfPath,
                                                               const std::string &srdfPath = "",
