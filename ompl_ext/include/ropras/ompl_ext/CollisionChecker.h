@@ -45,7 +45,8 @@ namespace ropras::ompl_ext
         /// one configuration (dof() values)
         bool isValid(const Environment &env, const double *q) const noexcept;
         /// \a count configurations, row-major (count x dof()); writes one verdict each; returns the number valid
-        std::size_t isValidBatch(const Environment &env, const double *qs, std::size_t count, bool *valid) const noexcept;
+        std::size_t isValidBatch(const Environment &env, const double *qs, std::size_t count,
+                                 bool *valid) const noexcept;
         /** \brief The straight joint-space motion q0 -> q1, interpolated at \a resolution (max joint step,
             rad or m) and raked over the SIMD lanes. q1 is checked; q0 is assumed valid (checked too when
             \a checkStart). On failure, when \a lastValidFraction is non-null it receives the largest

@@ -33,9 +33,12 @@ namespace ropras::ompl_ext
         std::shared_ptr<const PointCloud> cloud;  ///< for ShapeType::PointCloud
 
         static Shape sphere(double radius, const Eigen::Isometry3d &pose = Eigen::Isometry3d::Identity());
-        static Shape box(const Eigen::Vector3d &fullExtents, const Eigen::Isometry3d &pose = Eigen::Isometry3d::Identity());
-        static Shape cylinder(double radius, double length, const Eigen::Isometry3d &pose = Eigen::Isometry3d::Identity());
-        static Shape capsule(double radius, double length, const Eigen::Isometry3d &pose = Eigen::Isometry3d::Identity());
+        static Shape box(const Eigen::Vector3d &fullExtents,
+                         const Eigen::Isometry3d &pose = Eigen::Isometry3d::Identity());
+        static Shape cylinder(double radius, double length,
+                              const Eigen::Isometry3d &pose = Eigen::Isometry3d::Identity());
+        static Shape capsule(double radius, double length,
+                             const Eigen::Isometry3d &pose = Eigen::Isometry3d::Identity());
         static Shape pointCloud(std::shared_ptr<const PointCloud> cloud,
                                 const Eigen::Isometry3d &pose = Eigen::Isometry3d::Identity());
     };
@@ -93,7 +96,10 @@ namespace ropras::ompl_ext
                           const Eigen::Isometry3d &pose = Eigen::Isometry3d::Identity());
 
         void setObjectPose(int id, const Eigen::Isometry3d &pose);
-        void setObjectPose(const std::string &name, const Eigen::Isometry3d &pose) { setObjectPose(objectId(name), pose); }
+        void setObjectPose(const std::string &name, const Eigen::Isometry3d &pose)
+        {
+            setObjectPose(objectId(name), pose);
+        }
         const Eigen::Isometry3d &objectPose(int id) const;
         int objectId(const std::string &name) const;  ///< throws Error listing the object names if unknown
         bool hasObject(const std::string &name) const;

@@ -1,0 +1,362 @@
+// `ropras bench-collision`: speed of the SIMD kinematics and collision kernels on MoveIt scenes (FK, batch,
+// single configuration, motions), next to FCL with the same spheres and FCL with the URDF meshes.
+#include <time.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <random>
+
+#include "CommandRegistry.h"
+#include "ropras/core/Error.h"
+#include "ropras/ompl_ext/CollisionChecker.h"
+#include "ropras/ompl_ext/FclReferenceChecker.h"
+#include "ropras/ompl_ext/SceneYaml.h"
+
+namespace
+{
+    using namespace ropras;
+    using namespace ropras::ompl_ext;
+    using Clock = std::chrono::steady_clock;
+
+    struct BenchArgs
+    {
+        std::string urdf, srdf, meshUrdf, scenes, json, backend{"best"}, clock{"wall"};
+        int repeat{5};
+        std::size_t configs{1000};    ///< random configurations per scene
+        std::size_t edges{40};        ///< valid and invalid 1 rad edges per scene (each)
+        std::size_t fclConfigs{100};  ///< configurations per scene for FCL with spheres
+        std::size_t meshConfigs{20};  ///< configurations per scene for FCL with meshes
+        double edgeLength{1.0};
+        double resolution{1.0 / 32.0};
+        unsigned seed{1};
+    };
+
+    double median(std::vector<double> v)
+    {
+        if (v.empty())
+            return std::numeric_limits<double>::quiet_NaN();
+        std::sort(v.begin(), v.end());
+        const std::size_t n = v.size();
+        return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    }
+
+    /// wall clock (steady_clock) or this thread's CPU time (excludes time the thread waits for a core)
+    bool useCpuClock = false;
+
+    double nowNs()
+    {
+        if (useCpuClock)
+        {
+            timespec t{};
+            clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+            return 1e9 * static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec);
+        }
+        return std::chrono::duration<double, std::nano>(Clock::now().time_since_epoch()).count();
+    }
+
+    /// nanoseconds per item of \a body(), which processes \a items items
+    template <class F>
+    double nsPer(std::size_t items, F &&body)
+    {
+        if (items == 0)
+            return std::numeric_limits<double>::quiet_NaN();
+        const double t0 = nowNs();
+        body();
+        const double t1 = nowNs();
+        return (t1 - t0) / static_cast<double>(items);
+    }
+
+    struct Scene
+    {
+        std::string path;
+        Environment env;
+        std::vector<double> configs;                 ///< row-major, configs x dof
+        std::vector<double> valid, invalid;          ///< single configurations by verdict
+        std::vector<double> edgeValid, edgeInvalid;  ///< pairs of rows (q0, q1)
+    };
+
+    SimdBackend parseBackend(const std::string &name)
+    {
+        if (name == "best")
+            return SimdBackend::Best;
+        if (name == "scalar")
+            return SimdBackend::Scalar;
+        if (name == "avx2")
+            return SimdBackend::Avx2;
+        throw Error("bench-collision: unknown --backend '" + name + "' (best, scalar, avx2)");
+    }
+
+    int run(const BenchArgs &a)
+    {
+        if (a.clock != "wall" && a.clock != "cpu")
+            throw Error("bench-collision: unknown --clock '" + a.clock + "' (wall, cpu)");
+        useCpuClock = a.clock == "cpu";
+        const auto robot = RobotModel::fromUrdfFile(a.urdf, a.srdf);
+        const CollisionChecker checker(robot, parseBackend(a.backend));
+        const std::size_t dof = robot->dof();
+        const auto w = static_cast<std::size_t>(checker.width());
+
+        std::vector<std::string> paths;
+        for (const auto &entry : std::filesystem::recursive_directory_iterator(a.scenes))
+        {
+            const std::string name = entry.path().filename().string();
+            if (entry.is_regular_file() && name.rfind("scene", 0) == 0 && entry.path().extension() == ".yaml")
+                paths.push_back(entry.path().string());
+        }
+        std::sort(paths.begin(), paths.end());
+        if (paths.empty())
+            throw Error("bench-collision: no scene*.yaml under '" + a.scenes + "'");
+
+        // problem sets (fixed seed): uniform configurations, split by verdict; 1 rad edges from valid starts
+        std::mt19937_64 rng(a.seed);
+        const auto uniform = [&](double *q)
+        {
+            for (std::size_t j = 0; j < dof; ++j)
+                q[j] = std::uniform_real_distribution<double>(robot->joints()[j].lower, robot->joints()[j].upper)(rng);
+        };
+        std::vector<Scene> scenes;
+        for (const std::string &path : paths)
+        {
+            Scene s{path, loadPlanningScene(path), {}, {}, {}, {}, {}};
+            s.configs.resize(a.configs * dof);
+            for (std::size_t k = 0; k < a.configs; ++k)
+            {
+                double *q = s.configs.data() + k * dof;
+                uniform(q);
+                auto &bucket = checker.isValid(s.env, q) ? s.valid : s.invalid;
+                bucket.insert(bucket.end(), q, q + dof);
+            }
+            std::vector<double> q0(dof), q1(dof), dir(dof);
+            for (std::size_t attempt = 0; attempt < 200 * a.edges && (s.edgeValid.size() < 2 * a.edges * dof ||
+                                                                      s.edgeInvalid.size() < 2 * a.edges * dof);
+                 ++attempt)
+            {
+                uniform(q0.data());
+                if (!checker.isValid(s.env, q0.data()))
+                    continue;
+                double big = 0.0;
+                for (std::size_t j = 0; j < dof; ++j)
+                {
+                    dir[j] = std::uniform_real_distribution<double>(-1.0, 1.0)(rng);
+                    big = std::max(big, std::abs(dir[j]));
+                }
+                bool inside = true;
+                for (std::size_t j = 0; j < dof; ++j)
+                {
+                    q1[j] = q0[j] + a.edgeLength * dir[j] / big;  // max-norm length exactly edgeLength
+                    inside = inside && q1[j] >= robot->joints()[j].lower && q1[j] <= robot->joints()[j].upper;
+                }
+                if (!inside)
+                    continue;
+                auto &bucket =
+                    checker.isMotionValid(s.env, q0.data(), q1.data(), a.resolution) ? s.edgeValid : s.edgeInvalid;
+                if (bucket.size() >= 2 * a.edges * dof)
+                    continue;
+                bucket.insert(bucket.end(), q0.begin(), q0.end());
+                bucket.insert(bucket.end(), q1.begin(), q1.end());
+            }
+            scenes.push_back(std::move(s));
+        }
+
+        std::optional<FclSphereChecker> fclSpheres;
+        fclSpheres.emplace(robot);
+        std::shared_ptr<const RobotModel> meshRobot;
+        std::optional<FclMeshChecker> fclMeshes;
+        if (!a.meshUrdf.empty())
+        {
+            meshRobot = RobotModel::fromUrdfFile(a.meshUrdf, a.srdf);
+            if (meshRobot->dof() != dof)
+                throw Error("bench-collision: --mesh-urdf '" + a.meshUrdf + "' has " +
+                            std::to_string(meshRobot->dof()) + " joints, --urdf has " + std::to_string(dof));
+            fclMeshes.emplace(meshRobot);
+        }
+
+        std::size_t sink = 0;
+        std::vector<double> fk, batch, singleValid, singleInvalid, edgeValid, edgeInvalid, fclSphere, fclMesh;
+        std::vector<float> centres(4 * robot->spheres().size() * w);
+        std::unique_ptr<bool[]> verdicts(new bool[a.configs]);
+        std::size_t totalConfigs = 0, nValid = 0, nInvalid = 0, nEdgeValid = 0, nEdgeInvalid = 0;
+        for (const Scene &s : scenes)
+        {
+            totalConfigs += a.configs / w * w;
+            nValid += s.valid.size() / dof;
+            nInvalid += s.invalid.size() / dof;
+            nEdgeValid += s.edgeValid.size() / (2 * dof);
+            nEdgeInvalid += s.edgeInvalid.size() / (2 * dof);
+        }
+        for (int rep = 0; rep < a.repeat; ++rep)
+        {
+            fk.push_back(nsPer(totalConfigs,
+                               [&]
+                               {
+                                   for (const Scene &s : scenes)
+                                       for (std::size_t k = 0; k + w <= a.configs; k += w)
+                                       {
+                                           checker.sphereCentersBatch(s.configs.data() + k * dof, centres.data());
+                                           sink += centres[0] > 0.0f ? 1 : 0;
+                                       }
+                               }));
+            batch.push_back(nsPer(totalConfigs,
+                                  [&]
+                                  {
+                                      for (const Scene &s : scenes)
+                                          sink += checker.isValidBatch(s.env, s.configs.data(), a.configs / w * w,
+                                                                       verdicts.get());
+                                  }));
+            singleValid.push_back(nsPer(nValid,
+                                        [&]
+                                        {
+                                            for (const Scene &s : scenes)
+                                                for (std::size_t k = 0; k < s.valid.size(); k += dof)
+                                                    sink += checker.isValid(s.env, s.valid.data() + k) ? 1 : 0;
+                                        }));
+            singleInvalid.push_back(nsPer(nInvalid,
+                                          [&]
+                                          {
+                                              for (const Scene &s : scenes)
+                                                  for (std::size_t k = 0; k < s.invalid.size(); k += dof)
+                                                      sink += checker.isValid(s.env, s.invalid.data() + k) ? 1 : 0;
+                                          }));
+            edgeValid.push_back(nsPer(nEdgeValid,
+                                      [&]
+                                      {
+                                          for (const Scene &s : scenes)
+                                              for (std::size_t k = 0; k < s.edgeValid.size(); k += 2 * dof)
+                                                  sink +=
+                                                      checker.isMotionValid(s.env, s.edgeValid.data() + k,
+                                                                            s.edgeValid.data() + k + dof, a.resolution)
+                                                          ? 1
+                                                          : 0;
+                                      }));
+            edgeInvalid.push_back(nsPer(nEdgeInvalid,
+                                        [&]
+                                        {
+                                            for (const Scene &s : scenes)
+                                                for (std::size_t k = 0; k < s.edgeInvalid.size(); k += 2 * dof)
+                                                    sink += checker.isMotionValid(s.env, s.edgeInvalid.data() + k,
+                                                                                  s.edgeInvalid.data() + k + dof,
+                                                                                  a.resolution)
+                                                                ? 1
+                                                                : 0;
+                                        }));
+            // FCL: its object cache is rebuilt per scene, outside the timed loops
+            double fclNs = 0.0, meshNs = 0.0;
+            std::size_t fclCount = 0, meshCount = 0;
+            for (const Scene &s : scenes)
+            {
+                const std::size_t n = std::min(a.fclConfigs, a.configs), m = std::min(a.meshConfigs, a.configs);
+                sink += fclSpheres->isValid(s.env, s.configs.data()) ? 1 : 0;  // warm the cache
+                fclNs += nsPer(1,
+                               [&]
+                               {
+                                   for (std::size_t k = 0; k < n; ++k)
+                                       sink += fclSpheres->isValid(s.env, s.configs.data() + k * dof) ? 1 : 0;
+                               });
+                fclCount += n;
+                if (fclMeshes)
+                {
+                    sink += fclMeshes->isValid(s.env, s.configs.data()) ? 1 : 0;
+                    meshNs += nsPer(1,
+                                    [&]
+                                    {
+                                        for (std::size_t k = 0; k < m; ++k)
+                                            sink += fclMeshes->isValid(s.env, s.configs.data() + k * dof) ? 1 : 0;
+                                    });
+                    meshCount += m;
+                }
+            }
+            fclSphere.push_back(fclCount > 0 ? fclNs / static_cast<double>(fclCount)
+                                             : std::numeric_limits<double>::quiet_NaN());
+            if (fclMeshes)
+                fclMesh.push_back(meshCount > 0 ? meshNs / static_cast<double>(meshCount)
+                                                : std::numeric_limits<double>::quiet_NaN());
+        }
+
+        struct Row
+        {
+            const char *key, *what;
+            double ns;
+            std::size_t count;
+        };
+        const std::vector<Row> rows{
+            {"fk_ns", "FK only, batch of 8 (per config)", median(fk), totalConfigs},
+            {"batch_ns", "batch of 8 distinct (per config)", median(batch), totalConfigs},
+            {"single_valid_ns", "single config, valid", median(singleValid), nValid},
+            {"single_invalid_ns", "single config, invalid", median(singleInvalid), nInvalid},
+            {"edge_valid_ns", "1 rad edge at 1/32 rad, valid", median(edgeValid), nEdgeValid},
+            {"edge_invalid_ns", "1 rad edge at 1/32 rad, invalid", median(edgeInvalid), nEdgeInvalid},
+            {"fcl_sphere_ns", "FCL, same spheres (per config)", median(fclSphere), fclSphere.empty() ? 0u : 1u},
+            {"fcl_mesh_ns", "FCL, URDF meshes (per config)", median(fclMesh), fclMesh.empty() ? 0u : 1u},
+        };
+        std::cout << "robot " << robot->name() << " (" << dof << " dof, " << robot->spheres().size()
+                  << " spheres), backend " << simdBackendName(checker.backend()) << ", " << scenes.size() << " scenes, "
+                  << a.configs << " configs/scene, median of " << a.repeat << " repetitions\n";
+        std::cout << std::left << std::setw(36) << "measurement" << std::right << std::setw(14) << "ns" << std::setw(12)
+                  << "samples" << '\n';
+        for (const Row &r : rows)
+        {
+            std::cout << std::left << std::setw(36) << r.what << std::right << std::setw(14) << std::fixed
+                      << std::setprecision(1) << r.ns << std::setw(12)
+                      << (std::string(r.key).rfind("fcl", 0) == 0 ? std::string("") : std::to_string(r.count)) << '\n';
+        }
+        if (!a.json.empty())
+        {
+            nlohmann::json j;
+            j["robot"] = robot->name();
+            j["backend"] = simdBackendName(checker.backend());
+            j["scenes"] = scenes.size();
+            j["configs_per_scene"] = a.configs;
+            j["repeat"] = a.repeat;
+            j["resolution"] = a.resolution;
+            j["clock"] = a.clock;
+            for (const Row &r : rows)
+                j[r.key] = std::isnan(r.ns) ? nlohmann::json(nullptr) : nlohmann::json(r.ns);
+            std::ofstream out(a.json);
+            if (!out)
+                throw Error("bench-collision: cannot write '" + a.json + "'");
+            out << j.dump(2) << '\n';
+        }
+        return sink == static_cast<std::size_t>(-1) ? 1 : 0;  // keeps the work observable
+    }
+
+    std::function<int()> setup(CLI::App &app)
+    {
+        auto args = std::make_shared<BenchArgs>();
+        app.add_option("--urdf", args->urdf, "spherized robot URDF")->required()->check(CLI::ExistingFile);
+        app.add_option("--srdf", args->srdf, "SRDF (disabled self-collision pairs)")->check(CLI::ExistingFile);
+        app.add_option("--mesh-urdf", args->meshUrdf, "URDF with mesh collision geometry (FCL mesh baseline)")
+            ->check(CLI::ExistingFile);
+        app.add_option("--scenes", args->scenes, "folder searched recursively for scene*.yaml (MoveIt PlanningScene)")
+            ->required()
+            ->check(CLI::ExistingDirectory);
+        app.add_option("--json", args->json, "write the medians as JSON");
+        app.add_option("--repeat", args->repeat, "repetitions (medians are reported)")
+            ->capture_default_str()
+            ->check(CLI::PositiveNumber);
+        app.add_option("--configs", args->configs, "random configurations per scene")
+            ->capture_default_str()
+            ->check(CLI::PositiveNumber);
+        app.add_option("--edges", args->edges, "valid and invalid edges per scene (each)")->capture_default_str();
+        app.add_option("--fcl-configs", args->fclConfigs, "configurations per scene for FCL with spheres")
+            ->capture_default_str();
+        app.add_option("--mesh-configs", args->meshConfigs, "configurations per scene for FCL with meshes")
+            ->capture_default_str();
+        app.add_option("--resolution", args->resolution, "motion-check joint step (rad)")
+            ->capture_default_str()
+            ->check(CLI::PositiveNumber);
+        app.add_option("--backend", args->backend, "best, scalar or avx2")->capture_default_str();
+        app.add_option("--clock", args->clock, "wall (steady clock) or cpu (thread CPU time: use on a loaded machine)")
+            ->capture_default_str();
+        app.add_option("--seed", args->seed, "random seed")->capture_default_str();
+        return [args] { return run(*args); };
+    }
+
+    const ropras::bin::CommandRegistrar reg{
+        {"bench-collision", "time the SIMD kinematics and collision kernels (and FCL) on MoveIt scenes", setup}};
+}  // namespace

@@ -1,0 +1,520 @@
+#include "ropras/ompl_ext/CollisionChecker.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "ropras/core/Error.h"
+#include "simd/Avx2Vec.h"
+#include "simd/Kernels.h"
+#include "simd/KinematicProgram.h"
+#include "simd/ScalarVec.h"
+
+namespace ropras::ompl_ext
+{
+    namespace
+    {
+        using simd::KinematicProgram;
+        using simd::WIDTH;
+
+        /// per-thread scratch: grows to the largest layout any checker asked for on this thread, then stays
+        float *threadScratch(std::size_t floats) noexcept
+        {
+            static thread_local std::vector<float> buffer;
+            if (buffer.size() < floats)
+                buffer.resize(floats);
+            return buffer.data();
+        }
+
+        std::size_t roundUp(std::size_t n)
+        {
+            return (n + WIDTH - 1) / WIDTH * WIDTH;
+        }
+
+        void toFloat12(const Eigen::Isometry3d &t, float *out)
+        {
+            for (int i = 0; i < 3; ++i)
+            {
+                for (int j = 0; j < 3; ++j)
+                    out[3 * i + j] = static_cast<float>(t.linear()(i, j));
+                out[9 + i] = static_cast<float>(t.translation()(i));
+            }
+        }
+
+        bool withinLimits(const KinematicProgram &p, const double *q) noexcept
+        {
+            for (int j = 0; j < p.dof; ++j)
+            {
+                const double v = q[j];
+                const auto k = static_cast<std::size_t>(j);
+                if (!std::isfinite(v))
+                    return false;
+                if (!p.unbounded[k] && (v < p.lower[k] || v > p.upper[k]))
+                    return false;
+            }
+            return true;
+        }
+
+        /// joint values of lane \a lane into the batch q block (angles reduced for sin/cos)
+        void putLane(const KinematicProgram &p, const double *q, int lane, float *qBlock) noexcept
+        {
+            for (int j = 0; j < p.dof; ++j)
+                qBlock[WIDTH * j + lane] =
+                    p.rotational[static_cast<std::size_t>(j)] ? simd::angleArgument(q[j]) : static_cast<float>(q[j]);
+        }
+
+        template <class V>
+        struct Backend
+        {
+            using K = simd::Kernels<V>;
+
+            static bool isValid(const KinematicProgram &p, const Environment &env, const double *q) noexcept
+            {
+                if (!withinLimits(p, q))
+                    return false;
+                return K::validSingle(p, env, q, threadScratch(p.single.total));
+            }
+
+            static std::size_t isValidBatch(const KinematicProgram &p, const Environment &env, const double *qs,
+                                            std::size_t count, bool *valid) noexcept
+            {
+                const auto dof = static_cast<std::size_t>(p.dof);
+                float *buf = threadScratch(std::max(p.batch.total, p.single.total));
+                std::size_t nValid = 0;
+                for (std::size_t start = 0; start < count; start += WIDTH)
+                {
+                    const std::size_t n = std::min<std::size_t>(WIDTH, count - start);
+                    if (n == 1)
+                    {
+                        const double *q = qs + start * dof;
+                        valid[start] = withinLimits(p, q) && K::validSingle(p, env, q, buf);
+                        nValid += valid[start] ? 1 : 0;
+                        continue;
+                    }
+                    unsigned active = 0u;
+                    int firstGood = -1;
+                    for (std::size_t i = 0; i < n; ++i)
+                        if (withinLimits(p, qs + (start + i) * dof))
+                        {
+                            active |= 1u << i;
+                            if (firstGood < 0)
+                                firstGood = static_cast<int>(i);
+                        }
+                    if (active == 0u)
+                    {
+                        for (std::size_t i = 0; i < n; ++i)
+                            valid[start + i] = false;
+                        continue;
+                    }
+                    // inactive lanes repeat a good configuration so that every lane computes finite numbers
+                    for (int i = 0; i < WIDTH; ++i)
+                    {
+                        const bool own = (active >> i) & 1u;
+                        const std::size_t row = start + static_cast<std::size_t>(own ? i : firstGood);
+                        putLane(p, qs + row * dof, i, buf + p.batch.q);
+                    }
+                    K::framesBatch(p, buf);
+                    const unsigned ok = active & ~K::collideBatch(p, env, buf, active, false);
+                    for (std::size_t i = 0; i < n; ++i)
+                    {
+                        valid[start + i] = ((ok >> i) & 1u) != 0u;
+                        nValid += valid[start + i] ? 1 : 0;
+                    }
+                }
+                return nValid;
+            }
+
+            /// fills the batch q block with samples idx[i] / n of q0 -> q0 + d
+            static void putSamples(const KinematicProgram &p, const float *q0, const float *d, const double *idx,
+                                   double n, float *qBlock) noexcept
+            {
+                float t[WIDTH];
+                for (int i = 0; i < WIDTH; ++i)
+                    t[i] = static_cast<float>(idx[i] / n);
+                const V tv = V::load(t);
+                for (int j = 0; j < p.dof; ++j)
+                    fma(tv, V::broadcast(d[j]), V::broadcast(q0[j])).store(qBlock + WIDTH * j);
+            }
+
+            static bool isMotionValid(const KinematicProgram &p, const Environment &env, const double *q0,
+                                      const double *q1, double resolution, double *lastValid, bool checkStart) noexcept
+            {
+                if (lastValid != nullptr)
+                    *lastValid = 0.0;
+                if (!(resolution > 0.0) || !std::isfinite(resolution) || !withinLimits(p, q0) || !withinLimits(p, q1))
+                    return false;
+                double maxStep = 0.0;
+                for (int j = 0; j < p.dof; ++j)
+                    maxStep = std::max(maxStep, std::abs(q1[j] - q0[j]));
+                const double steps = std::ceil(maxStep / resolution);
+                if (!(steps <= 1e8))  // absurd resolution for the distance: refuse rather than run for hours
+                    return false;
+                const auto n = std::max<long long>(1, static_cast<long long>(steps));
+                const long long k0 = checkStart ? 0 : 1;
+                const long long samples = n - k0 + 1;
+                float *buf = threadScratch(std::max(p.batch.total, p.single.total));
+                if (samples == 1)  // only q1: the single-configuration path
+                {
+                    if (K::validSingle(p, env, q1, buf))
+                        return true;
+                    return false;  // lastValid = 0: q0 is the last configuration known valid
+                }
+                // q0 and d in float; angles reduced (q0 + t d stays close to the reduced range)
+                float q0f[64], df[64];
+                std::vector<float> bigQ0, bigD;
+                float *q0p = q0f, *dp = df;
+                if (p.dof > 64)
+                {
+                    // not reached for real arms; keeps arbitrary models correct (allocates)
+                    bigQ0.resize(static_cast<std::size_t>(p.dof));
+                    bigD.resize(static_cast<std::size_t>(p.dof));
+                    q0p = bigQ0.data();
+                    dp = bigD.data();
+                }
+                for (int j = 0; j < p.dof; ++j)
+                {
+                    const bool rot = p.rotational[static_cast<std::size_t>(j)];
+                    q0p[j] = rot ? simd::angleArgument(q0[j]) : static_cast<float>(q0[j]);
+                    dp[j] = static_cast<float>(q1[j] - q0[j]);
+                }
+                const double nd = static_cast<double>(n);
+                // rake: lane i walks the i-th of WIDTH consecutive segments, all lanes advance together
+                const long long segment = (samples + WIDTH - 1) / WIDTH;
+                double idx[WIDTH];
+                long long firstBad = -1;
+                for (long long j = 0; j < segment && firstBad < 0; ++j)
+                {
+                    for (int i = 0; i < WIDTH; ++i)
+                        idx[i] = static_cast<double>(std::min(n, k0 + i * segment + j));
+                    putSamples(p, q0p, dp, idx, nd, buf + p.batch.q);
+                    K::framesBatch(p, buf);
+                    const unsigned hit = K::collideBatch(p, env, buf, (1u << WIDTH) - 1u, true);
+                    if (hit != 0u)
+                        firstBad = static_cast<long long>(idx[__builtin_ctz(hit)]);
+                }
+                if (firstBad < 0)
+                    return true;
+                if (lastValid == nullptr)
+                    return false;
+                // the first invalid sample: scan the samples before firstBad in order, WIDTH at a time
+                for (long long base = k0; base < firstBad; base += WIDTH)
+                {
+                    for (int i = 0; i < WIDTH; ++i)
+                        idx[i] = static_cast<double>(std::min(firstBad - 1, base + i));
+                    putSamples(p, q0p, dp, idx, nd, buf + p.batch.q);
+                    K::framesBatch(p, buf);
+                    const unsigned hit = K::collideBatch(p, env, buf, (1u << WIDTH) - 1u, false);
+                    if (hit != 0u)
+                    {
+                        firstBad = static_cast<long long>(idx[__builtin_ctz(hit)]);
+                        break;
+                    }
+                }
+                *lastValid = firstBad <= 0 ? 0.0 : static_cast<double>(firstBad - 1) / nd;
+                return false;
+            }
+
+            static void sphereCenters(const KinematicProgram &p, const double *q, float *out) noexcept
+            {
+                float *buf = threadScratch(p.single.total);
+                K::framesSingle(p, q, buf);
+                simd::Placed placed;
+                K::placeAll(p, buf, placed);
+                for (std::size_t s = 0; s < p.programIndexOfSphere.size(); ++s)
+                {
+                    const auto k = static_cast<std::size_t>(p.programIndexOfSphere[s]);
+                    out[4 * s] = buf[p.single.sx + k];
+                    out[4 * s + 1] = buf[p.single.sy + k];
+                    out[4 * s + 2] = buf[p.single.sz + k];
+                    out[4 * s + 3] = p.sr[k];
+                }
+            }
+
+            static void sphereCentersBatch(const KinematicProgram &p, const double *qs, float *out) noexcept
+            {
+                float *buf = threadScratch(p.batch.total);
+                for (int i = 0; i < WIDTH; ++i)
+                    putLane(p, qs + static_cast<std::size_t>(i) * static_cast<std::size_t>(p.dof), i, buf + p.batch.q);
+                K::framesBatch(p, buf);
+                simd::Placed placed;
+                K::placeAllBatch(p, buf, placed);
+                for (std::size_t s = 0; s < p.programIndexOfSphere.size(); ++s)
+                {
+                    const auto k = static_cast<std::size_t>(p.programIndexOfSphere[s]);
+                    V::load(buf + p.batch.sx + WIDTH * k).store(out + (4 * s) * WIDTH);
+                    V::load(buf + p.batch.sy + WIDTH * k).store(out + (4 * s + 1) * WIDTH);
+                    V::load(buf + p.batch.sz + WIDTH * k).store(out + (4 * s + 2) * WIDTH);
+                    V::broadcast(p.sr[k]).store(out + (4 * s + 3) * WIDTH);
+                }
+            }
+        };
+
+        using ScalarBackend = Backend<simd::ScalarVec>;
+#ifdef ROPRAS_SIMD_HAVE_AVX2
+        using Avx2Backend = Backend<simd::Avx2Vec>;
+#endif
+    }  // namespace
+
+    bool simdBackendAvailable(SimdBackend backend) noexcept
+    {
+        switch (backend)
+        {
+            case SimdBackend::Best:
+            case SimdBackend::Scalar:
+                return true;
+            case SimdBackend::Avx2:
+#ifdef ROPRAS_SIMD_HAVE_AVX2
+                return true;
+#else
+                return false;
+#endif
+        }
+        return false;
+    }
+
+    const char *simdBackendName(SimdBackend backend) noexcept
+    {
+        switch (backend)
+        {
+            case SimdBackend::Best:
+                return "best";
+            case SimdBackend::Scalar:
+                return "scalar";
+            case SimdBackend::Avx2:
+                return "avx2";
+        }
+        return "unknown";
+    }
+
+    struct CollisionChecker::Program
+    {
+        KinematicProgram kp;
+    };
+
+    CollisionChecker::CollisionChecker(std::shared_ptr<const RobotModel> robot, SimdBackend backend)
+        : robot_(std::move(robot)), backend_(backend)
+    {
+        if (!robot_)
+            throw Error("CollisionChecker: null RobotModel");
+        if (backend_ == SimdBackend::Best)
+            backend_ = simdBackendAvailable(SimdBackend::Avx2) ? SimdBackend::Avx2 : SimdBackend::Scalar;
+        if (!simdBackendAvailable(backend_))
+            throw Error(std::string("CollisionChecker: SIMD backend '") + simdBackendName(backend_) +
+                        "' is not compiled into this build (configure with ROPRAS_NATIVE_SIMD=ON on an AVX2+FMA "
+                        "machine); use SimdBackend::Best or SimdBackend::Scalar");
+
+        program_ = std::make_unique<Program>();
+        KinematicProgram &p = program_->kp;
+        const RobotModel &model = *robot_;
+        p.dof = static_cast<int>(model.dof());
+
+        p.lower.resize(model.dof());
+        p.upper.resize(model.dof());
+        p.unbounded.assign(model.dof(), 0);
+        p.rotational.assign(model.dof(), 0);
+        for (std::size_t j = 0; j < model.dof(); ++j)
+        {
+            const PlanningJoint &joint = model.joints()[j];
+            p.lower[j] = joint.lower;
+            p.upper[j] = joint.upper;
+            p.unbounded[j] = joint.type == JointType::Continuous ? 1 : 0;
+        }
+
+        const auto &frames = model.frames();
+        p.frames.resize(frames.size());
+        for (std::size_t f = 0; f < frames.size(); ++f)
+        {
+            const KinematicFrame &frame = frames[f];
+            simd::FrameOp &op = p.frames[f];
+            if (frame.parent >= static_cast<int>(f) || (f > 0 && frame.parent < 0))
+                throw Error("CollisionChecker: robot '" + model.name() + "' frame '" + frame.name +
+                            "' is not in topological order (parent " + std::to_string(frame.parent) + ")");
+            op.parent = frame.parent;
+            op.variable = frame.variable;
+            op.motion = simd::Motion::None;
+            if (frame.variable >= p.dof)
+                throw Error("CollisionChecker: robot '" + model.name() + "' frame '" + frame.name +
+                            "' refers to variable " + std::to_string(frame.variable) + " of " + std::to_string(p.dof));
+            if (frame.variable >= 0 && frame.motion == JointMotion::RotateZ)
+            {
+                op.motion = simd::Motion::RotateZ;
+                p.rotational[static_cast<std::size_t>(frame.variable)] = 1;
+            }
+            else if (frame.variable >= 0 && frame.motion == JointMotion::TranslateZ)
+                op.motion = simd::Motion::TranslateZ;
+            toFloat12(frame.offset, op.offset);
+            for (int i = 0; i < 3; ++i)
+            {
+                for (int j = 0; j < 3; ++j)
+                    op.offsetRows[4 * i + j] = static_cast<float>(frame.offset.linear()(i, j));
+                op.offsetRows[4 * i + 3] = static_cast<float>(frame.offset.translation()(i));
+            }
+            // fold signed-permutation rotations and zero translation components
+            op.permutation = true;
+            for (int j = 0; j < 3 && op.permutation; ++j)
+            {
+                int nonZero = 0;
+                for (int i = 0; i < 3; ++i)
+                {
+                    const double v = frame.offset.linear()(i, j);
+                    if (std::abs(v) > 1e-12)
+                    {
+                        ++nonZero;
+                        op.perm[j] = i;
+                        op.sign[j] = v > 0.0 ? 1.0f : -1.0f;
+                        if (std::abs(std::abs(v) - 1.0) > 1e-12)
+                            op.permutation = false;
+                    }
+                }
+                if (nonZero != 1)
+                    op.permutation = false;
+            }
+            op.translationMask = 0u;
+            for (int k = 0; k < 3; ++k)
+                if (frame.offset.translation()(k) != 0.0)
+                    op.translationMask |= 1u << k;
+        }
+
+        // spheres in program order: collision link by collision link
+        const auto &collisionLinks = model.collisionLinks();
+        const auto &spheres = model.spheres();
+        p.programIndexOfSphere.assign(spheres.size(), -1);
+        std::vector<int> linkIndex(collisionLinks.size(), -1);
+        for (std::size_t c = 0; c < collisionLinks.size(); ++c)
+        {
+            const CollisionLink &cl = collisionLinks[c];
+            if (cl.sphereCount <= 0)
+                continue;
+            if (cl.frame < 0 || cl.frame >= static_cast<int>(frames.size()) || cl.firstSphere < 0 ||
+                cl.firstSphere + cl.sphereCount > static_cast<int>(spheres.size()))
+                throw Error("CollisionChecker: robot '" + model.name() + "' collision link '" + cl.name +
+                            "' has an invalid frame or sphere range");
+            simd::LinkOp op;
+            op.frame = cl.frame;
+            op.bx = static_cast<float>(cl.boundCenterInFrame.x());
+            op.by = static_cast<float>(cl.boundCenterInFrame.y());
+            op.bz = static_cast<float>(cl.boundCenterInFrame.z());
+            op.first = static_cast<int>(p.sx.size());
+            op.count = cl.sphereCount;
+            op.padded = static_cast<int>(roundUp(static_cast<std::size_t>(cl.sphereCount)));
+            double bound = cl.boundRadius;
+            for (int k = 0; k < op.padded; ++k)
+            {
+                // the block is padded with the link's own spheres again: whole-chunk tests need no masks
+                const int s = cl.firstSphere + k % cl.sphereCount;
+                const CollisionSphere &sphere = spheres[static_cast<std::size_t>(s)];
+                if (k < cl.sphereCount)
+                    p.programIndexOfSphere[static_cast<std::size_t>(s)] = static_cast<int>(p.sx.size());
+                p.sx.push_back(static_cast<float>(sphere.centerInFrame.x()));
+                p.sy.push_back(static_cast<float>(sphere.centerInFrame.y()));
+                p.sz.push_back(static_cast<float>(sphere.centerInFrame.z()));
+                p.sr.push_back(static_cast<float>(sphere.radius));
+                // the bound must enclose every sphere (guards against a loose model bound)
+                bound = std::max(bound, (sphere.centerInFrame - cl.boundCenterInFrame).norm() + sphere.radius);
+            }
+            // float rounding slack: the bound may never cull a touching sphere
+            op.br = static_cast<float>(bound * (1.0 + 1e-5) + 1e-6);
+            linkIndex[c] = static_cast<int>(p.links.size());
+            p.links.push_back(op);
+        }
+        for (std::size_t s = 0; s < spheres.size(); ++s)
+            if (p.programIndexOfSphere[s] < 0)
+                throw Error("CollisionChecker: robot '" + model.name() + "' sphere " + std::to_string(s) +
+                            " belongs to no collision link");
+        p.sphereSlots = static_cast<int>(p.sx.size());
+        p.linkPadded = static_cast<int>(roundUp(p.links.size()));
+        p.linkRadius.assign(static_cast<std::size_t>(p.linkPadded), 0.0f);
+        for (std::size_t l = 0; l < p.links.size(); ++l)
+            p.linkRadius[l] = p.links[l].br;
+        for (const auto &pair : model.selfCollisionPairs())
+        {
+            if (pair.first < 0 || pair.second < 0 || pair.first >= static_cast<int>(collisionLinks.size()) ||
+                pair.second >= static_cast<int>(collisionLinks.size()))
+                throw Error("CollisionChecker: robot '" + model.name() + "' self-collision pair (" +
+                            std::to_string(pair.first) + ", " + std::to_string(pair.second) + ") out of range");
+            const int a = linkIndex[static_cast<std::size_t>(pair.first)];
+            const int b = linkIndex[static_cast<std::size_t>(pair.second)];
+            if (a >= 0 && b >= 0)
+                p.selfPairs.emplace_back(a, b);
+        }
+
+        // scratch layouts
+        const std::size_t dofPad = roundUp(model.dof()), nFrames = p.frames.size();
+        const std::size_t nSpheres = static_cast<std::size_t>(p.sphereSlots), nLinks = p.links.size();
+        std::size_t at = 0;
+        const auto take = [&at](std::size_t n)
+        {
+            const std::size_t start = at;
+            at += roundUp(n);
+            return start;
+        };
+        p.single.sin = take(dofPad);
+        p.single.cos = take(dofPad);
+        p.single.q = take(dofPad);
+        p.single.frames = take(12 * nFrames);
+        p.single.sx = take(nSpheres);
+        p.single.sy = take(nSpheres);
+        p.single.sz = take(nSpheres);
+        p.single.lx = take(static_cast<std::size_t>(p.linkPadded));
+        p.single.ly = take(static_cast<std::size_t>(p.linkPadded));
+        p.single.lz = take(static_cast<std::size_t>(p.linkPadded));
+        p.single.total = at;
+        at = 0;
+        p.batch.sin = take(WIDTH * model.dof());
+        p.batch.cos = take(WIDTH * model.dof());
+        p.batch.q = take(WIDTH * model.dof());
+        p.batch.frames = take(12 * WIDTH * nFrames);
+        p.batch.sx = take(WIDTH * nSpheres);
+        p.batch.sy = take(WIDTH * nSpheres);
+        p.batch.sz = take(WIDTH * nSpheres);
+        p.batch.lx = take(WIDTH * nLinks);
+        p.batch.ly = take(WIDTH * nLinks);
+        p.batch.lz = take(WIDTH * nLinks);
+        p.batch.total = at;
+        // size this thread's scratch now, so the first check on it does not allocate
+        threadScratch(std::max(p.single.total, p.batch.total));
+    }
+
+    CollisionChecker::~CollisionChecker() = default;
+
+    int CollisionChecker::width() const noexcept
+    {
+        return WIDTH;
+    }
+
+#ifdef ROPRAS_SIMD_HAVE_AVX2
+#define ROPRAS_DISPATCH(call) (backend_ == SimdBackend::Avx2 ? Avx2Backend::call : ScalarBackend::call)
+#else
+#define ROPRAS_DISPATCH(call) ScalarBackend::call
+#endif
+
+    bool CollisionChecker::isValid(const Environment &env, const double *q) const noexcept
+    {
+        return ROPRAS_DISPATCH(isValid(program_->kp, env, q));
+    }
+
+    std::size_t CollisionChecker::isValidBatch(const Environment &env, const double *qs, std::size_t count,
+                                               bool *valid) const noexcept
+    {
+        return ROPRAS_DISPATCH(isValidBatch(program_->kp, env, qs, count, valid));
+    }
+
+    bool CollisionChecker::isMotionValid(const Environment &env, const double *q0, const double *q1, double resolution,
+                                         double *lastValidFraction, bool checkStart) const noexcept
+    {
+        return ROPRAS_DISPATCH(isMotionValid(program_->kp, env, q0, q1, resolution, lastValidFraction, checkStart));
+    }
+
+    void CollisionChecker::sphereCenters(const double *q, float *out) const noexcept
+    {
+        ROPRAS_DISPATCH(sphereCenters(program_->kp, q, out));
+    }
+
+    void CollisionChecker::sphereCentersBatch(const double *qs, float *out) const noexcept
+    {
+        ROPRAS_DISPATCH(sphereCentersBatch(program_->kp, qs, out));
+    }
+#undef ROPRAS_DISPATCH
+}  // namespace ropras::ompl_ext

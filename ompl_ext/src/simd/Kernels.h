@@ -1,0 +1,761 @@
+// Forward kinematics and sphere collision kernels, written once for any 8-lane backend V.
+// Single configuration: scalar FK, then vectorized over spheres. Batch: one configuration per lane.
+#ifndef ROPRAS_OMPL_EXT_SIMD_KERNELS_H
+#define ROPRAS_OMPL_EXT_SIMD_KERNELS_H
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#include "KinematicProgram.h"
+#include "SinCos.h"
+#include "ropras/ompl_ext/Environment.h"
+
+namespace ropras::ompl_ext::simd
+{
+    // ---------------------------------------------------------------- exact sphere-vs-obstacle tests
+    // (x, y, z, r): WIDTH spheres; each returns the lanes whose sphere touches the obstacle.
+
+    template <class V>
+    inline typename V::Mask boundTest(const V &x, const V &y, const V &z, const V &r, float cx, float cy, float cz,
+                                      float cr) noexcept
+    {
+        const V dx = x - V::broadcast(cx), dy = y - V::broadcast(cy), dz = z - V::broadcast(cz);
+        const V rr = r + V::broadcast(cr);
+        return cmpLe(fma(dx, dx, fma(dy, dy, dz * dz)), rr * rr);
+    }
+
+    template <class V>
+    inline typename V::Mask hitSphere(const V &x, const V &y, const V &z, const V &r, const SphereObstacle &o) noexcept
+    {
+        return boundTest(x, y, z, r, o.x, o.y, o.z, o.r);
+    }
+
+    template <class V>
+    inline typename V::Mask hitBox(const V &x, const V &y, const V &z, const V &r, const BoxObstacle &o) noexcept
+    {
+        const V dx = x - V::broadcast(o.cx), dy = y - V::broadcast(o.cy), dz = z - V::broadcast(o.cz);
+        // p_box = R^T d; R row-major, so (R^T d)_i = sum_j rot[3j + i] d_j
+        const V px = fma(V::broadcast(o.rot[0]), dx, fma(V::broadcast(o.rot[3]), dy, V::broadcast(o.rot[6]) * dz));
+        const V py = fma(V::broadcast(o.rot[1]), dx, fma(V::broadcast(o.rot[4]), dy, V::broadcast(o.rot[7]) * dz));
+        const V pz = fma(V::broadcast(o.rot[2]), dx, fma(V::broadcast(o.rot[5]), dy, V::broadcast(o.rot[8]) * dz));
+        const V zero = V::zero();
+        const V qx = max(abs(px) - V::broadcast(o.hx), zero);
+        const V qy = max(abs(py) - V::broadcast(o.hy), zero);
+        const V qz = max(abs(pz) - V::broadcast(o.hz), zero);
+        return cmpLe(fma(qx, qx, fma(qy, qy, qz * qz)), r * r);
+    }
+
+    template <class V>
+    inline typename V::Mask hitCylinder(const V &x, const V &y, const V &z, const V &r,
+                                        const CylinderObstacle &o) noexcept
+    {
+        const V dx = x - V::broadcast(o.cx), dy = y - V::broadcast(o.cy), dz = z - V::broadcast(o.cz);
+        const V h = fma(V::broadcast(o.ax), dx, fma(V::broadcast(o.ay), dy, V::broadcast(o.az) * dz));
+        const V zero = V::zero();
+        const V rho2 = max(fnma(h, h, fma(dx, dx, fma(dy, dy, dz * dz))), zero);
+        const V dr = max(sqrt(rho2) - V::broadcast(o.radius), zero);
+        const V dh = max(abs(h) - V::broadcast(o.halfLength), zero);
+        return cmpLe(fma(dr, dr, dh * dh), r * r);
+    }
+
+    template <class V>
+    inline typename V::Mask hitCapsule(const V &x, const V &y, const V &z, const V &r,
+                                       const CapsuleObstacle &o) noexcept
+    {
+        const V ddx = V::broadcast(o.dx), ddy = V::broadcast(o.dy), ddz = V::broadcast(o.dz);
+        const V px = x - V::broadcast(o.ax), py = y - V::broadcast(o.ay), pz = z - V::broadcast(o.az);
+        const V t =
+            min(max(fma(px, ddx, fma(py, ddy, pz * ddz)) * V::broadcast(o.invLengthSq), V::zero()), V::broadcast(1.0f));
+        const V ex = fnma(t, ddx, px), ey = fnma(t, ddy, py), ez = fnma(t, ddz, pz);
+        const V rr = r + V::broadcast(o.radius);
+        return cmpLe(fma(ex, ex, fma(ey, ey, ez * ez)), rr * rr);
+    }
+
+    /// lanes in \a candidates (bit set) whose sphere touches the cloud
+    template <class V>
+    inline unsigned hitCloud(const V &x, const V &y, const V &z, const V &r, const CloudObstacle &o,
+                             unsigned candidates) noexcept
+    {
+        float fx[WIDTH], fy[WIDTH], fz[WIDTH], fr[WIDTH];
+        x.store(fx);
+        y.store(fy);
+        z.store(fz);
+        r.store(fr);
+        unsigned hit = 0;
+        while (candidates != 0u)
+        {
+            const int i = __builtin_ctz(candidates);
+            candidates &= candidates - 1u;
+            const Eigen::Vector3f p = o.worldToCloud * Eigen::Vector3f(fx[i], fy[i], fz[i]);
+            if (o.cloud->intersectsSphere(p.x(), p.y(), p.z(), fr[i]))
+                hit |= 1u << i;
+        }
+        return hit;
+    }
+
+    inline void capsuleBound(const CapsuleObstacle &o, float &cx, float &cy, float &cz, float &cr) noexcept
+    {
+        cx = o.ax + 0.5f * o.dx;
+        cy = o.ay + 0.5f * o.dy;
+        cz = o.az + 0.5f * o.dz;
+        cr = 0.5f * std::sqrt(o.dx * o.dx + o.dy * o.dy + o.dz * o.dz) + o.radius;
+    }
+
+    // ---------------------------------------------------------------- scalar transforms (single path)
+
+    /// out = a * b (12-float transforms)
+    inline void compose(const float *a, const float *b, float *out) noexcept
+    {
+        for (int i = 0; i < 3; ++i)
+        {
+            const float a0 = a[3 * i], a1 = a[3 * i + 1], a2 = a[3 * i + 2];
+            out[3 * i] = a0 * b[0] + a1 * b[3] + a2 * b[6];
+            out[3 * i + 1] = a0 * b[1] + a1 * b[4] + a2 * b[7];
+            out[3 * i + 2] = a0 * b[2] + a1 * b[5] + a2 * b[8];
+            out[9 + i] = a0 * b[9] + a1 * b[10] + a2 * b[11] + a[9 + i];
+        }
+    }
+
+    /// the float joint value fed to sin/cos: continuous joints far from zero are reduced in double first
+    inline float angleArgument(double v) noexcept
+    {
+        if (std::abs(v) > 64.0)
+            v = std::remainder(v, 6.283185307179586476925);
+        return static_cast<float>(v);
+    }
+
+    /// 4 floats with GCC/Clang vector extensions (SSE where available, plain code elsewhere)
+    typedef float Row4 __attribute__((vector_size(16)));
+
+    inline Row4 loadRow(const float *p) noexcept
+    {
+        Row4 r;
+        std::memcpy(&r, p, sizeof(r));
+        return r;
+    }
+
+    inline void storeRow(float *p, const Row4 &r) noexcept
+    {
+        std::memcpy(p, &r, sizeof(r));
+    }
+
+    /// links whose spheres are placed (bit per link); models with more than 64 links place all at once
+    struct Placed
+    {
+        std::uint64_t bits{0};
+        bool all{false};
+        bool has(int li) const noexcept { return all || ((bits >> li) & 1u) != 0u; }
+        void set(int li) noexcept { bits |= std::uint64_t{1} << li; }
+    };
+
+    /// axis-aligned box around every link bounding sphere (of every lane): obstacles outside it are skipped
+    struct Aabb
+    {
+        float lo[3], hi[3];
+        bool touches(float cx, float cy, float cz, float cr) const noexcept
+        {
+            const float c[3] = {cx, cy, cz};
+            float d2 = 0.0f;
+            for (int i = 0; i < 3; ++i)
+            {
+                const float d = std::max(std::max(lo[i] - c[i], c[i] - hi[i]), 0.0f);
+                d2 += d * d;
+            }
+            return d2 <= cr * cr;
+        }
+    };
+
+    template <class V>
+    struct Kernels
+    {
+        using Mask = typename V::Mask;
+
+        // ------------------------------------------------------------ single configuration
+
+        /// scalar FK into buf: frames and world link bounds. q must be finite. Spheres: placeLink / placeAll.
+        static void framesSingle(const KinematicProgram &p, const double *q, float *buf) noexcept
+        {
+            const ScratchLayout &l = p.single;
+            float *sn = buf + l.sin, *cs = buf + l.cos, *qf = buf + l.q;
+            for (int j = 0; j < p.dof; j += WIDTH)
+            {
+                const int n = std::min(WIDTH, p.dof - j);
+                float in[WIDTH] = {0, 0, 0, 0, 0, 0, 0, 0};
+                for (int k = 0; k < n; ++k)
+                {
+                    const double v = q[j + k];
+                    qf[j + k] = static_cast<float>(v);
+                    in[k] = p.rotational[static_cast<std::size_t>(j + k)] ? angleArgument(v) : 0.0f;
+                }
+                V s, c;
+                sinCos(V::load(in), s, c);
+                s.store(sn + j);  // the regions are padded to a multiple of WIDTH
+                c.store(cs + j);
+            }
+            // frames as three 4-float rows (r0 r1 r2 t): row_i(P * O) = sum_k P_ik O_row_k + (0, 0, 0, P_i3)
+            float *t = buf + l.frames;
+            const Row4 e3 = {0.0f, 0.0f, 0.0f, 1.0f};
+            for (std::size_t f = 0; f < p.frames.size(); ++f)
+            {
+                const FrameOp &op = p.frames[f];
+                float *tf = t + 12 * f;
+                Row4 r[3];
+                const Row4 o0 = loadRow(op.offsetRows), o1 = loadRow(op.offsetRows + 4),
+                           o2 = loadRow(op.offsetRows + 8);
+                if (op.parent < 0)
+                {
+                    r[0] = o0;
+                    r[1] = o1;
+                    r[2] = o2;
+                }
+                else
+                {
+                    const float *a = t + 12 * op.parent;
+                    for (int i = 0; i < 3; ++i)
+                        r[i] = a[4 * i] * o0 + a[4 * i + 1] * o1 + a[4 * i + 2] * o2 + a[4 * i + 3] * e3;
+                }
+                if (op.motion == Motion::RotateZ)
+                {
+                    const float c = cs[op.variable], s = sn[op.variable];
+                    const Row4 cc = {c, c, 1.0f, 1.0f}, ss = {s, -s, 0.0f, 0.0f};
+                    for (int i = 0; i < 3; ++i)
+                        r[i] = r[i] * cc + __builtin_shufflevector(r[i], r[i], 1, 0, 2, 3) * ss;
+                }
+                else if (op.motion == Motion::TranslateZ)
+                {
+                    const float d = qf[op.variable];
+                    for (int i = 0; i < 3; ++i)
+                        r[i][3] += d * r[i][2];
+                }
+                for (int i = 0; i < 3; ++i)
+                    storeRow(tf + 4 * i, r[i]);
+            }
+            float *lx = buf + l.lx, *ly = buf + l.ly, *lz = buf + l.lz;
+            for (std::size_t li = 0; li < p.links.size(); ++li)
+            {
+                const LinkOp &link = p.links[li];
+                const float *m = t + 12 * link.frame;
+                lx[li] = m[0] * link.bx + m[1] * link.by + m[2] * link.bz + m[3];
+                ly[li] = m[4] * link.bx + m[5] * link.by + m[6] * link.bz + m[7];
+                lz[li] = m[8] * link.bx + m[9] * link.by + m[10] * link.bz + m[11];
+            }
+            for (int li = static_cast<int>(p.links.size()); li < p.linkPadded; ++li)
+                lx[li] = ly[li] = lz[li] = 1e18f;  // never near anything
+        }
+
+        /// world centres of one link's spheres (whole padded block)
+        static void placeLink(const KinematicProgram &p, float *buf, int li) noexcept
+        {
+            const ScratchLayout &l = p.single;
+            const LinkOp &link = p.links[static_cast<std::size_t>(li)];
+            const float *m = buf + l.frames + 12 * link.frame;  // rows (r0 r1 r2 t)
+            const V r00 = V::broadcast(m[0]), r01 = V::broadcast(m[1]), r02 = V::broadcast(m[2]);
+            const V r10 = V::broadcast(m[4]), r11 = V::broadcast(m[5]), r12 = V::broadcast(m[6]);
+            const V r20 = V::broadcast(m[8]), r21 = V::broadcast(m[9]), r22 = V::broadcast(m[10]);
+            const V tx = V::broadcast(m[3]), ty = V::broadcast(m[7]), tz = V::broadcast(m[11]);
+            for (int s = link.first; s < link.first + link.padded; s += WIDTH)
+            {
+                const V x = V::load(p.sx.data() + s), y = V::load(p.sy.data() + s), z = V::load(p.sz.data() + s);
+                fma(r00, x, fma(r01, y, fma(r02, z, tx))).store(buf + l.sx + s);
+                fma(r10, x, fma(r11, y, fma(r12, z, ty))).store(buf + l.sy + s);
+                fma(r20, x, fma(r21, y, fma(r22, z, tz))).store(buf + l.sz + s);
+            }
+        }
+
+        static void ensure(const KinematicProgram &p, float *buf, Placed &placed, int li) noexcept
+        {
+            if (!placed.has(li))
+            {
+                placeLink(p, buf, li);
+                placed.set(li);
+            }
+        }
+
+        static void placeAll(const KinematicProgram &p, float *buf, Placed &placed) noexcept
+        {
+            for (int li = 0; li < static_cast<int>(p.links.size()); ++li)
+                placeLink(p, buf, li);
+            placed.all = true;
+        }
+
+        /// true when any link's spheres touch the obstacle; candidates come from the link bounding spheres
+        template <class Exact>
+        static bool obstacleSingle(const KinematicProgram &p, float *buf, Placed &placed, float cx, float cy, float cz,
+                                   float cr, const Exact &exact) noexcept
+        {
+            const ScratchLayout &l = p.single;
+            for (int c = 0; c < p.linkPadded; c += WIDTH)
+            {
+                const V bx = V::load(buf + l.lx + c), by = V::load(buf + l.ly + c), bz = V::load(buf + l.lz + c),
+                        br = V::load(p.linkRadius.data() + c);
+                unsigned bits = boundTest(bx, by, bz, br, cx, cy, cz, cr).bits();
+                if (bits == 0u)
+                    continue;
+                // the exact test on the link bounding spheres: far tighter than sphere-vs-sphere for boards
+                bits &= exact(bx, by, bz, br);
+                while (bits != 0u)
+                {
+                    const int li = c + __builtin_ctz(bits);
+                    bits &= bits - 1u;
+                    ensure(p, buf, placed, li);
+                    const LinkOp &link = p.links[static_cast<std::size_t>(li)];
+                    for (int s = link.first; s < link.first + link.padded; s += WIDTH)
+                        if (exact(V::load(buf + l.sx + s), V::load(buf + l.sy + s), V::load(buf + l.sz + s),
+                                  V::load(p.sr.data() + s)) != 0u)
+                            return true;
+                }
+            }
+            return false;
+        }
+
+        static Aabb aabbSingle(const KinematicProgram &p, const float *buf) noexcept
+        {
+            const ScratchLayout &l = p.single;
+            Aabb box{{1e30f, 1e30f, 1e30f}, {-1e30f, -1e30f, -1e30f}};
+            for (std::size_t li = 0; li < p.links.size(); ++li)
+            {
+                const float r = p.links[li].br;
+                const float c[3] = {buf[l.lx + li], buf[l.ly + li], buf[l.lz + li]};
+                for (int i = 0; i < 3; ++i)
+                {
+                    box.lo[i] = std::min(box.lo[i], c[i] - r);
+                    box.hi[i] = std::max(box.hi[i], c[i] + r);
+                }
+            }
+            return box;
+        }
+
+        static bool envSingle(const KinematicProgram &p, const Environment &env, float *buf, Placed &placed) noexcept
+        {
+            const Aabb box = aabbSingle(p, buf);
+            for (const SphereObstacle &o : env.spheres())
+                if (box.touches(o.x, o.y, o.z, o.r) &&
+                    obstacleSingle(p, buf, placed, o.x, o.y, o.z, o.r,
+                                   [&](const V &x, const V &y, const V &z, const V &r)
+                                   { return hitSphere(x, y, z, r, o).bits(); }))
+                    return true;
+            for (const BoxObstacle &o : env.boxes())
+                if (box.touches(o.cx, o.cy, o.cz, o.boundRadius) &&
+                    obstacleSingle(p, buf, placed, o.cx, o.cy, o.cz, o.boundRadius,
+                                   [&](const V &x, const V &y, const V &z, const V &r)
+                                   { return hitBox(x, y, z, r, o).bits(); }))
+                    return true;
+            for (const CylinderObstacle &o : env.cylinders())
+                if (box.touches(o.cx, o.cy, o.cz, o.boundRadius) &&
+                    obstacleSingle(p, buf, placed, o.cx, o.cy, o.cz, o.boundRadius,
+                                   [&](const V &x, const V &y, const V &z, const V &r)
+                                   { return hitCylinder(x, y, z, r, o).bits(); }))
+                    return true;
+            for (const CapsuleObstacle &o : env.capsules())
+            {
+                float cx, cy, cz, cr;
+                capsuleBound(o, cx, cy, cz, cr);
+                if (box.touches(cx, cy, cz, cr) && obstacleSingle(p, buf, placed, cx, cy, cz, cr,
+                                                                  [&](const V &x, const V &y, const V &z, const V &r)
+                                                                  { return hitCapsule(x, y, z, r, o).bits(); }))
+                    return true;
+            }
+            for (const CloudObstacle &o : env.clouds())
+            {
+                if (o.boundRadius < 0.0f || !box.touches(o.cx, o.cy, o.cz, o.boundRadius))
+                    continue;
+                if (obstacleSingle(p, buf, placed, o.cx, o.cy, o.cz, o.boundRadius,
+                                   [&](const V &x, const V &y, const V &z, const V &r)
+                                   {
+                                       const unsigned cand =
+                                           boundTest(x, y, z, r, o.cx, o.cy, o.cz, o.boundRadius).bits();
+                                       return cand != 0u ? hitCloud(x, y, z, r, o, cand) : 0u;
+                                   }))
+                    return true;
+            }
+            return false;
+        }
+
+        static bool selfSingle(const KinematicProgram &p, float *buf, Placed &placed) noexcept
+        {
+            const ScratchLayout &l = p.single;
+            const float *wx = buf + l.sx, *wy = buf + l.sy, *wz = buf + l.sz;
+            const float *lx = buf + l.lx, *ly = buf + l.ly, *lz = buf + l.lz;
+            for (const auto &pair : p.selfPairs)
+            {
+                const LinkOp &a = p.links[static_cast<std::size_t>(pair.first)];
+                const LinkOp &b = p.links[static_cast<std::size_t>(pair.second)];
+                const float dx = lx[pair.first] - lx[pair.second];
+                const float dy = ly[pair.first] - ly[pair.second];
+                const float dz = lz[pair.first] - lz[pair.second];
+                const float rr = a.br + b.br;
+                if (dx * dx + dy * dy + dz * dz > rr * rr)
+                    continue;
+                ensure(p, buf, placed, pair.first);
+                ensure(p, buf, placed, pair.second);
+                // spheres of a that reach b's bounding sphere, then those against b's spheres
+                for (int c = a.first; c < a.first + a.padded; c += WIDTH)
+                {
+                    unsigned near =
+                        boundTest(V::load(wx + c), V::load(wy + c), V::load(wz + c), V::load(p.sr.data() + c),
+                                  lx[pair.second], ly[pair.second], lz[pair.second], b.br)
+                            .bits() &
+                        Mask::firstLanes(a.first + a.count - c).bits();
+                    while (near != 0u)
+                    {
+                        const int i = c + __builtin_ctz(near);
+                        near &= near - 1u;
+                        const float ri = p.sr[static_cast<std::size_t>(i)];
+                        for (int s = b.first; s < b.first + b.padded; s += WIDTH)
+                            if (boundTest(V::load(wx + s), V::load(wy + s), V::load(wz + s), V::load(p.sr.data() + s),
+                                          wx[i], wy[i], wz[i], ri)
+                                    .any())
+                                return true;
+                    }
+                }
+            }
+            return false;
+        }
+
+        /// q within bounds and finite
+        static bool validSingle(const KinematicProgram &p, const Environment &env, const double *q, float *buf) noexcept
+        {
+            framesSingle(p, q, buf);
+            Placed placed;
+            if (p.links.size() > 64)
+                placeAll(p, buf, placed);
+            return !envSingle(p, env, buf, placed) && !selfSingle(p, buf, placed);
+        }
+
+        // ------------------------------------------------------------ batch: one configuration per lane
+
+        /// FK of WIDTH configurations: per variable joint values in buf + batch.q (WIDTH floats each,
+        /// angles already reduced); writes frames and link bounds (WIDTH floats each). Spheres: placeLinkBatch.
+        static void framesBatch(const KinematicProgram &p, float *buf) noexcept
+        {
+            const ScratchLayout &l = p.batch;
+            constexpr int W = WIDTH;
+            for (int j = 0; j < p.dof; ++j)
+                if (p.rotational[static_cast<std::size_t>(j)])
+                {
+                    V s, c;
+                    sinCos(V::load(buf + l.q + W * j), s, c);
+                    s.store(buf + l.sin + W * j);
+                    c.store(buf + l.cos + W * j);
+                }
+            float *t = buf + l.frames;
+            for (std::size_t f = 0; f < p.frames.size(); ++f)
+            {
+                const FrameOp &op = p.frames[f];
+                float *tf = t + 12 * W * f;
+                V m[12];
+                if (op.parent < 0)
+                {
+                    for (int i = 0; i < 12; ++i)
+                        m[i] = V::broadcast(op.offset[i]);
+                }
+                else if (op.permutation)
+                {
+                    const float *pt = t + 12 * W * op.parent;
+                    for (int i = 0; i < 3; ++i)
+                    {
+                        V ti = V::load(pt + W * (9 + i));
+                        for (int k = 0; k < 3; ++k)
+                            if ((op.translationMask >> k) & 1u)
+                                ti = fma(V::load(pt + W * (3 * i + k)), V::broadcast(op.offset[9 + k]), ti);
+                        m[9 + i] = ti;
+                        for (int j = 0; j < 3; ++j)
+                        {
+                            const V src = V::load(pt + W * (3 * i + op.perm[j]));
+                            m[3 * i + j] = op.sign[j] > 0.0f ? src : V::zero() - src;
+                        }
+                    }
+                }
+                else
+                {
+                    const float *pt = t + 12 * W * op.parent;
+                    const float *o = op.offset;
+                    for (int i = 0; i < 3; ++i)
+                    {
+                        const V a0 = V::load(pt + W * (3 * i)), a1 = V::load(pt + W * (3 * i + 1)),
+                                a2 = V::load(pt + W * (3 * i + 2)), a3 = V::load(pt + W * (9 + i));
+                        m[3 * i] = fma(a0, V::broadcast(o[0]), fma(a1, V::broadcast(o[3]), a2 * V::broadcast(o[6])));
+                        m[3 * i + 1] =
+                            fma(a0, V::broadcast(o[1]), fma(a1, V::broadcast(o[4]), a2 * V::broadcast(o[7])));
+                        m[3 * i + 2] =
+                            fma(a0, V::broadcast(o[2]), fma(a1, V::broadcast(o[5]), a2 * V::broadcast(o[8])));
+                        m[9 + i] =
+                            fma(a0, V::broadcast(o[9]), fma(a1, V::broadcast(o[10]), fma(a2, V::broadcast(o[11]), a3)));
+                    }
+                }
+                if (op.motion == Motion::RotateZ)
+                {
+                    const V c = V::load(buf + l.cos + W * op.variable), s = V::load(buf + l.sin + W * op.variable);
+                    for (int i = 0; i < 3; ++i)
+                    {
+                        const V a = m[3 * i], b = m[3 * i + 1];
+                        m[3 * i] = fma(c, a, s * b);
+                        m[3 * i + 1] = fnma(s, a, c * b);
+                    }
+                }
+                else if (op.motion == Motion::TranslateZ)
+                {
+                    const V d = V::load(buf + l.q + W * op.variable);
+                    for (int i = 0; i < 3; ++i)
+                        m[9 + i] = fma(d, m[3 * i + 2], m[9 + i]);
+                }
+                for (int i = 0; i < 12; ++i)
+                    m[i].store(tf + W * i);
+            }
+            for (std::size_t li = 0; li < p.links.size(); ++li)
+            {
+                const LinkOp &link = p.links[li];
+                const float *pt = t + 12 * W * link.frame;
+                const V vx = V::broadcast(link.bx), vy = V::broadcast(link.by), vz = V::broadcast(link.bz);
+                for (int i = 0; i < 3; ++i)
+                    fma(V::load(pt + W * (3 * i)), vx,
+                        fma(V::load(pt + W * (3 * i + 1)), vy,
+                            fma(V::load(pt + W * (3 * i + 2)), vz, V::load(pt + W * (9 + i)))))
+                        .store(buf +
+                               (i == 0   ? l.lx
+                                : i == 1 ? l.ly
+                                         : l.lz) +
+                               W * li);
+            }
+        }
+
+        /// world centres (WIDTH lanes each) of one link's real spheres
+        static void placeLinkBatch(const KinematicProgram &p, float *buf, int li) noexcept
+        {
+            const ScratchLayout &l = p.batch;
+            constexpr int W = WIDTH;
+            const LinkOp &link = p.links[static_cast<std::size_t>(li)];
+            const float *pt = buf + l.frames + 12 * W * link.frame;
+            V m[12];
+            for (int i = 0; i < 12; ++i)
+                m[i] = V::load(pt + W * i);
+            for (int s = link.first; s < link.first + link.count; ++s)
+            {
+                const auto k = static_cast<std::size_t>(s);
+                const V vx = V::broadcast(p.sx[k]), vy = V::broadcast(p.sy[k]), vz = V::broadcast(p.sz[k]);
+                fma(m[0], vx, fma(m[1], vy, fma(m[2], vz, m[9]))).store(buf + l.sx + W * s);
+                fma(m[3], vx, fma(m[4], vy, fma(m[5], vz, m[10]))).store(buf + l.sy + W * s);
+                fma(m[6], vx, fma(m[7], vy, fma(m[8], vz, m[11]))).store(buf + l.sz + W * s);
+            }
+        }
+
+        static void ensureBatch(const KinematicProgram &p, float *buf, Placed &placed, int li) noexcept
+        {
+            if (!placed.has(li))
+            {
+                placeLinkBatch(p, buf, li);
+                placed.set(li);
+            }
+        }
+
+        static void placeAllBatch(const KinematicProgram &p, float *buf, Placed &placed) noexcept
+        {
+            for (int li = 0; li < static_cast<int>(p.links.size()); ++li)
+                placeLinkBatch(p, buf, li);
+            placed.all = true;
+        }
+
+        /// lanes (bits) of \a active that collide with one obstacle, for one link
+        template <class Exact>
+        static unsigned obstacleBatch(const KinematicProgram &p, float *buf, Placed &placed, int li, unsigned active,
+                                      float cx, float cy, float cz, float cr, const Exact &exact) noexcept
+        {
+            const ScratchLayout &l = p.batch;
+            constexpr int W = WIDTH;
+            const LinkOp &link = p.links[static_cast<std::size_t>(li)];
+            const unsigned cand = boundTest(V::load(buf + l.lx + W * li), V::load(buf + l.ly + W * li),
+                                            V::load(buf + l.lz + W * li), V::broadcast(link.br), cx, cy, cz, cr)
+                                      .bits() &
+                                  active;
+            if (cand == 0u)
+                return 0u;
+            // the exact test on the link bounding sphere before its spheres
+            const unsigned near = exact(V::load(buf + l.lx + W * li), V::load(buf + l.ly + W * li),
+                                        V::load(buf + l.lz + W * li), V::broadcast(link.br), cand) &
+                                  cand;
+            if (near == 0u)
+                return 0u;
+            ensureBatch(p, buf, placed, li);
+            unsigned hit = 0u;
+            for (int s = link.first; s < link.first + link.count; ++s)
+            {
+                hit |= exact(V::load(buf + l.sx + W * s), V::load(buf + l.sy + W * s), V::load(buf + l.sz + W * s),
+                             V::broadcast(p.sr[static_cast<std::size_t>(s)]), near & ~hit);
+                if ((near & ~hit) == 0u)
+                    break;
+            }
+            return hit & near;
+        }
+
+        /// the box around every link bound of the \a active lanes
+        static Aabb aabbBatch(const KinematicProgram &p, const float *buf, unsigned active) noexcept
+        {
+            const ScratchLayout &l = p.batch;
+            constexpr int W = WIDTH;
+            const Mask lanes = Mask::fromBits(active);
+            const V far = V::broadcast(1e30f), nfar = V::broadcast(-1e30f);
+            V lo[3] = {far, far, far}, hi[3] = {nfar, nfar, nfar};
+            const std::size_t offsets[3] = {l.lx, l.ly, l.lz};
+            for (std::size_t li = 0; li < p.links.size(); ++li)
+            {
+                const V r = V::broadcast(p.links[li].br);
+                for (int i = 0; i < 3; ++i)
+                {
+                    const V c = V::load(buf + offsets[i] + W * li);
+                    lo[i] = min(lo[i], select(lanes, c - r, far));
+                    hi[i] = max(hi[i], select(lanes, c + r, nfar));
+                }
+            }
+            Aabb box;
+            for (int i = 0; i < 3; ++i)
+            {
+                float a[W], b[W];
+                lo[i].store(a);
+                hi[i].store(b);
+                box.lo[i] = *std::min_element(a, a + W);
+                box.hi[i] = *std::max_element(b, b + W);
+            }
+            return box;
+        }
+
+        /** \brief Collision lanes of a batch after framesBatch. \a active: lanes to check (bits); stops as soon
+            as every active lane collides, or at the first collision when \a stopOnAny. */
+        static unsigned collideBatch(const KinematicProgram &p, const Environment &env, float *buf, unsigned active,
+                                     bool stopOnAny) noexcept
+        {
+            Placed placed;
+            if (p.links.size() > 64)
+                placeAllBatch(p, buf, placed);
+            unsigned hit = 0u;
+            const auto done = [&] { return stopOnAny ? hit != 0u : (active & ~hit) == 0u; };
+            const Aabb box = aabbBatch(p, buf, active);
+            const auto &spheres = env.spheres();
+            const auto &boxes = env.boxes();
+            const auto &cylinders = env.cylinders();
+            const auto &capsules = env.capsules();
+            const auto &clouds = env.clouds();
+            const int nLinks = static_cast<int>(p.links.size());
+            // obstacle-major: the robot box rejects far obstacles once, then every link is tested
+            for (const SphereObstacle &o : spheres)
+            {
+                if (!box.touches(o.x, o.y, o.z, o.r))
+                    continue;
+                for (int li = 0; li < nLinks; ++li)
+                {
+                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, o.x, o.y, o.z, o.r,
+                                         [&](const V &x, const V &y, const V &z, const V &r, unsigned)
+                                         { return hitSphere(x, y, z, r, o).bits(); });
+                    if (done())
+                        return hit;
+                }
+            }
+            for (const BoxObstacle &o : boxes)
+            {
+                if (!box.touches(o.cx, o.cy, o.cz, o.boundRadius))
+                    continue;
+                for (int li = 0; li < nLinks; ++li)
+                {
+                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, o.cx, o.cy, o.cz, o.boundRadius,
+                                         [&](const V &x, const V &y, const V &z, const V &r, unsigned)
+                                         { return hitBox(x, y, z, r, o).bits(); });
+                    if (done())
+                        return hit;
+                }
+            }
+            for (const CylinderObstacle &o : cylinders)
+            {
+                if (!box.touches(o.cx, o.cy, o.cz, o.boundRadius))
+                    continue;
+                for (int li = 0; li < nLinks; ++li)
+                {
+                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, o.cx, o.cy, o.cz, o.boundRadius,
+                                         [&](const V &x, const V &y, const V &z, const V &r, unsigned)
+                                         { return hitCylinder(x, y, z, r, o).bits(); });
+                    if (done())
+                        return hit;
+                }
+            }
+            for (const CapsuleObstacle &o : capsules)
+            {
+                float cx, cy, cz, cr;
+                capsuleBound(o, cx, cy, cz, cr);
+                if (!box.touches(cx, cy, cz, cr))
+                    continue;
+                for (int li = 0; li < nLinks; ++li)
+                {
+                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, cx, cy, cz, cr,
+                                         [&](const V &x, const V &y, const V &z, const V &r, unsigned)
+                                         { return hitCapsule(x, y, z, r, o).bits(); });
+                    if (done())
+                        return hit;
+                }
+            }
+            for (const CloudObstacle &o : clouds)
+            {
+                if (o.boundRadius < 0.0f || !box.touches(o.cx, o.cy, o.cz, o.boundRadius))
+                    continue;
+                for (int li = 0; li < nLinks; ++li)
+                {
+                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, o.cx, o.cy, o.cz, o.boundRadius,
+                                         [&](const V &x, const V &y, const V &z, const V &r, unsigned cand)
+                                         {
+                                             const unsigned near =
+                                                 boundTest(x, y, z, r, o.cx, o.cy, o.cz, o.boundRadius).bits() & cand;
+                                             return near != 0u ? hitCloud(x, y, z, r, o, near) : 0u;
+                                         });
+                    if (done())
+                        return hit;
+                }
+            }
+            const ScratchLayout &l = p.batch;
+            constexpr int W = WIDTH;
+            for (const auto &pair : p.selfPairs)
+            {
+                const LinkOp &a = p.links[static_cast<std::size_t>(pair.first)];
+                const LinkOp &b = p.links[static_cast<std::size_t>(pair.second)];
+                const V bx = V::load(buf + l.lx + W * pair.second), by = V::load(buf + l.ly + W * pair.second),
+                        bz = V::load(buf + l.lz + W * pair.second);
+                const V dx = V::load(buf + l.lx + W * pair.first) - bx;
+                const V dy = V::load(buf + l.ly + W * pair.first) - by;
+                const V dz = V::load(buf + l.lz + W * pair.first) - bz;
+                const V rr = V::broadcast(a.br + b.br);
+                unsigned cand = cmpLe(fma(dx, dx, fma(dy, dy, dz * dz)), rr * rr).bits() & active & ~hit;
+                if (cand == 0u)
+                    continue;
+                ensureBatch(p, buf, placed, pair.first);
+                ensureBatch(p, buf, placed, pair.second);
+                for (int i = a.first; i < a.first + a.count && cand != 0u; ++i)
+                {
+                    const V x = V::load(buf + l.sx + W * i), y = V::load(buf + l.sy + W * i),
+                            z = V::load(buf + l.sz + W * i);
+                    const float ri = p.sr[static_cast<std::size_t>(i)];
+                    // lanes where sphere i reaches b's bounding sphere
+                    const V ex = x - bx, ey = y - by, ez = z - bz;
+                    const float rb = ri + b.br;
+                    unsigned near = cmpLe(fma(ex, ex, fma(ey, ey, ez * ez)), V::broadcast(rb * rb)).bits() & cand;
+                    for (int j = b.first; j < b.first + b.count && near != 0u; ++j)
+                    {
+                        const V fx = x - V::load(buf + l.sx + W * j), fy = y - V::load(buf + l.sy + W * j),
+                                fz = z - V::load(buf + l.sz + W * j);
+                        const float rs = ri + p.sr[static_cast<std::size_t>(j)];
+                        const unsigned h =
+                            cmpLe(fma(fx, fx, fma(fy, fy, fz * fz)), V::broadcast(rs * rs)).bits() & near;
+                        if (h != 0u)
+                        {
+                            hit |= h;
+                            cand &= ~h;
+                            near &= ~h;
+                            if (done())
+                                return hit;
+                        }
+                    }
+                }
+            }
+            return hit;
+        }
+    };
+}  // namespace ropras::ompl_ext::simd
+
+#endif
