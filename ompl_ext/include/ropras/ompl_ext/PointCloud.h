@@ -14,8 +14,8 @@ namespace ropras::ompl_ext
     public:
         /// \a pointRadius >= 0 inflates every point; \a cellSize <= 0 picks one from the cloud's extent.
         /// Throws ropras::Error on non-finite points or negative radius.
-        static std::shared_ptr<const PointCloud> build(const std::vector<Eigen::Vector3f> &points,
-                                                       float pointRadius, float cellSize = 0.0f);
+        static std::shared_ptr<const PointCloud> build(const std::vector<Eigen::Vector3f> &points, float pointRadius,
+                                                       float cellSize = 0.0f);
 
         /// true when the sphere (centre in the cloud's frame) touches an inflated point. noexcept, no allocation.
         bool intersectsSphere(float x, float y, float z, float radius) const noexcept;

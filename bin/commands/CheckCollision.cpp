@@ -1,0 +1,229 @@
+// `ropras check-collision`: cross-checks the SIMD collision kernels against the independent FCL reference on a
+// user's robot and scenes, and optionally measures how conservative the sphere model is against the meshes.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <regex>
+#include <sstream>
+
+#include "CommandRegistry.h"
+#include "ropras/core/Error.h"
+#include "ropras/ompl_ext/CrossCheck.h"
+#include "ropras/ompl_ext/FclReferenceChecker.h"
+#include "ropras/ompl_ext/SceneYaml.h"
+
+namespace
+{
+    namespace fs = std::filesystem;
+    using namespace ropras::ompl_ext;
+
+    struct Args
+    {
+        std::string urdf, srdf, scenes, meshUrdf;
+        std::vector<std::string> joints;
+        std::size_t samples{10000};
+        std::size_t meshSamples{0};
+        std::uint64_t seed{1};
+        double tolerance{1e-4};
+    };
+
+    /// true when the file has a top-level `world:` key (a PlanningScene rather than a request)
+    bool looksLikeScene(const fs::path &path)
+    {
+        std::ifstream in(path);
+        static const std::regex world(R"(^world\s*:)");
+        for (std::string line; std::getline(in, line);)
+            if (std::regex_search(line, world))
+                return true;
+        return false;
+    }
+
+    std::vector<CrossCheckScene> loadScenes(const std::string &where, std::size_t &skipped)
+    {
+        std::vector<CrossCheckScene> scenes;
+        const fs::path root(where);
+        if (fs::is_regular_file(root))
+        {
+            scenes.push_back({root.filename().string(), loadPlanningScene(root.string())});
+            return scenes;
+        }
+        if (!fs::is_directory(root))
+            throw ropras::Error("--scenes '" + where + "': no such file or folder");
+        std::vector<fs::path> files;
+        for (const auto &entry : fs::recursive_directory_iterator(root))
+        {
+            const std::string ext = entry.path().extension().string();
+            if (entry.is_regular_file() && (ext == ".yaml" || ext == ".yml"))
+                files.push_back(entry.path());
+        }
+        std::sort(files.begin(), files.end());
+        for (const fs::path &file : files)
+        {
+            if (!looksLikeScene(file))
+            {
+                ++skipped;
+                continue;
+            }
+            scenes.push_back({fs::relative(file, root).string(), loadPlanningScene(file.string())});
+        }
+        if (scenes.empty())
+            throw ropras::Error("--scenes '" + where + "': no MoveIt PlanningScene (YAML with a 'world' key) found");
+        return scenes;
+    }
+
+    /// self pairs whose spheres touch at the middle of the joint limits (a hint when the SRDF misses pairs)
+    std::vector<std::string> pairsTouchingAtMiddle(const RobotModel &robot)
+    {
+        std::vector<double> middle;
+        for (const PlanningJoint &joint : robot.joints())
+            middle.push_back(0.5 * (joint.lower + joint.upper));
+        const auto centers = robot.sphereCentersReference(middle.data());
+        const auto &spheres = robot.spheres();
+        const auto &links = robot.collisionLinks();
+        std::vector<std::string> touching;
+        for (const auto &[a, b] : robot.selfCollisionPairs())
+        {
+            const CollisionLink &la = links[std::size_t(a)], &lb = links[std::size_t(b)];
+            bool touch = false;
+            for (int i = la.firstSphere; i < la.firstSphere + la.sphereCount && !touch; ++i)
+                for (int j = lb.firstSphere; j < lb.firstSphere + lb.sphereCount && !touch; ++j)
+                    touch = (centers[std::size_t(i)] - centers[std::size_t(j)]).norm() <=
+                            spheres[std::size_t(i)].radius + spheres[std::size_t(j)].radius;
+            if (touch)
+                touching.push_back(la.name + " / " + lb.name);
+        }
+        return touching;
+    }
+
+    std::string backendLabel(SimdBackend backend)
+    {
+        if (backend != SimdBackend::Best)
+            return simdBackendName(backend);
+        return simdBackendAvailable(SimdBackend::Avx2) ? "best (avx2)" : "best (scalar)";
+    }
+
+    std::string percent(std::size_t part, std::size_t whole)
+    {
+        char text[32];
+        std::snprintf(text, sizeof(text), "%.2f%%", whole ? 100.0 * double(part) / double(whole) : 0.0);
+        return text;
+    }
+
+    int run(const Args &args)
+    {
+        const auto start = std::chrono::steady_clock::now();
+        RobotModel::Options options;
+        options.planningJoints = args.joints;
+        const auto robot = RobotModel::fromUrdfFile(args.urdf, args.srdf, options);
+        std::size_t skipped = 0;
+        std::vector<CrossCheckScene> scenes = loadScenes(args.scenes, skipped);
+        const std::size_t sceneFiles = scenes.size();
+        scenes.push_back({"(no obstacles)", Environment()});
+
+        std::cout << "robot      " << robot->name() << " (" << args.urdf << "): " << robot->dof() << " joints [";
+        for (std::size_t i = 0; i < robot->dof(); ++i)
+            std::cout << (i ? ", " : "") << robot->joints()[i].name;
+        std::cout << "], " << robot->spheres().size() << " spheres on " << robot->collisionLinks().size() << " links, "
+                  << robot->selfCollisionPairs().size() << " self-collision pairs\n";
+        std::cout << "scenes     " << sceneFiles << " from " << args.scenes;
+        if (skipped)
+            std::cout << " (" << skipped << " other YAML files skipped)";
+        std::cout << " + 1 without obstacles (self-collision only)\n";
+        std::cout << "samples    " << args.samples << " configurations uniform in the joint limits, seed " << args.seed
+                  << ", about " << args.samples / scenes.size() << " per scene\n";
+
+        CrossCheckOptions check;
+        check.samples = args.samples;
+        check.seed = args.seed;
+        check.contactTolerance = args.tolerance;
+        // Best is the widest compiled backend; when that is the scalar one, checking it twice adds nothing
+        check.backends = {SimdBackend::Best};
+        if (simdBackendAvailable(SimdBackend::Avx2))
+            check.backends.push_back(SimdBackend::Scalar);
+        const CrossCheckReport report = crossCheckSpheres(robot, scenes, check);
+
+        std::cout << "reference  FCL 0.7 (double) on the same spheres: " << report.referenceValid << " of "
+                  << report.configurations << " collision-free ("
+                  << percent(report.referenceValid, report.configurations) << ")\n\n";
+        std::printf("%-12s %10s %13s %14s %14s %20s\n", "backend", "agree", "near-contact", "disagreements",
+                    "batch!=single", "max centre error");
+        for (const BackendAgreement &b : report.backends)
+            std::printf("%-12s %10zu %13zu %14zu %14zu %18.2e m\n", backendLabel(b.backend).c_str(), b.agree,
+                        b.nearContact, b.disagreements, b.batchMismatches, b.maxCenterError);
+        std::cout << "(near-contact: verdicts that differ where FCL's signed distance is within " << args.tolerance
+                  << " m of contact; centres compared on "
+                  << (report.backends.empty() ? 0 : report.backends[0].centerChecks) << " configurations)\n";
+        for (const std::string &example : report.examples)
+            std::cout << "DISAGREEMENT " << example << '\n';
+
+        // a robot that collides with itself nearly everywhere usually has an incomplete SRDF
+        const auto touching = pairsTouchingAtMiddle(*robot);
+        if (!touching.empty())
+        {
+            std::cout << "\nwarning: these self-collision pairs already touch at the middle of the joint limits "
+                         "(add them to the SRDF's disable_collisions if they are in contact by design):\n";
+            for (const std::string &pair : touching)
+                std::cout << "  " << pair << '\n';
+        }
+
+        if (!args.meshUrdf.empty())
+        {
+            const auto meshRobot = RobotModel::fromUrdfFile(args.meshUrdf, args.srdf, options);
+            CrossCheckOptions meshOptions = check;
+            meshOptions.samples = args.meshSamples ? args.meshSamples : std::min<std::size_t>(args.samples, 5000);
+            const MeshComparison m = compareWithMeshes(robot, meshRobot, scenes, meshOptions);
+            std::cout << "\nmeshes     " << args.meshUrdf << " (FCL, " << meshRobot->collisionGeometries().size()
+                      << " collision elements), " << m.configurations << " configurations:\n";
+            std::cout << "  agree              " << m.agree << " (" << percent(m.agree, m.configurations) << ")\n";
+            std::cout << "  unsafe             " << m.unsafe << " (" << percent(m.unsafe, m.configurations)
+                      << "): spheres free, meshes collide (" << m.unsafeSelf << " of them self-collisions)\n";
+            std::cout << "  over-conservative  " << m.overConservative << " ("
+                      << percent(m.overConservative, m.configurations) << "): spheres collide, meshes free ("
+                      << m.overConservativeSelf << " of them self-collisions)\n";
+            for (const std::string &example : m.unsafeExamples)
+                std::cout << "  unsafe example: " << example << '\n';
+        }
+
+        const bool passed = report.passed(check.centerTolerance);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::cout << "\nresult     " << (passed ? "PASS" : "FAIL") << ": ";
+        if (passed)
+            std::cout << "every verdict more than " << args.tolerance
+                      << " m from contact agrees with FCL, sphere centres within " << check.centerTolerance << " m";
+        else
+            std::cout << "see the disagreements above";
+        std::printf(" (%.1f s)\n", seconds);
+        return passed ? 0 : 1;
+    }
+
+    std::function<int()> setup(CLI::App &app)
+    {
+        auto a = std::make_shared<Args>();
+        app.add_option("--urdf", a->urdf, "robot URDF (its sphere model is checked)")
+            ->required()
+            ->check(CLI::ExistingFile);
+        app.add_option("--srdf", a->srdf, "SRDF (disabled self-collision pairs)")->check(CLI::ExistingFile);
+        app.add_option("--joints", a->joints, "planning joints, comma separated (default: all movable joints)")
+            ->delimiter(',');
+        app.add_option("--scenes", a->scenes, "a MoveIt PlanningScene YAML, or a folder searched recursively")
+            ->required();
+        app.add_option("--samples", a->samples, "random configurations in total")
+            ->capture_default_str()
+            ->check(CLI::PositiveNumber);
+        app.add_option("--mesh-urdf", a->meshUrdf, "the same robot with mesh collision geometry (FCL mesh comparison)")
+            ->check(CLI::ExistingFile);
+        app.add_option("--mesh-samples", a->meshSamples,
+                       "configurations for the mesh comparison (default min(samples, 5000))");
+        app.add_option("--seed", a->seed, "random seed")->capture_default_str();
+        app.add_option("--tolerance", a->tolerance, "contact tolerance (m) within which disagreements are accepted")
+            ->capture_default_str()
+            ->check(CLI::NonNegativeNumber);
+        return [a] { return run(*a); };
+    }
+
+    const ropras::bin::CommandRegistrar reg{
+        {"check-collision", "cross-check the SIMD collision checker against FCL on your robot and scenes", setup}};
+}  // namespace
