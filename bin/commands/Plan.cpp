@@ -1,0 +1,164 @@
+// `ropras plan`: one motion plan for a MoveIt problem (PlanningScene + MotionPlanRequest) with any OMPL planner.
+#include <ompl/base/PlannerTerminationCondition.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
+#include <chrono>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+
+#include "CommandRegistry.h"
+#include "ropras/core/Error.h"
+#include "ropras/ompl_ext/PlannerRegistry.h"
+#include "ropras/ompl_ext/PlanningContext.h"
+#include "ropras/ompl_ext/SceneYaml.h"
+
+namespace
+{
+    using namespace ropras;
+    using namespace ropras::ompl_ext;
+
+    struct PlanArgs
+    {
+        std::string urdf, srdf, scene, request, planner{"RRTConnect"}, out;
+        std::vector<std::string> params;
+        double time{1.0};
+        double resolution{MotionValidator::DEFAULT_RESOLUTION};
+        bool simplify{false};
+        unsigned seed{1};
+    };
+
+    std::map<std::string, std::string> parseParams(const std::vector<std::string> &list)
+    {
+        std::map<std::string, std::string> out;
+        for (const std::string &kv : list)
+        {
+            const auto eq = kv.find('=');
+            if (eq == std::string::npos || eq == 0)
+                throw Error("--param expects key=value, got '" + kv + "'");
+            out[kv.substr(0, eq)] = kv.substr(eq + 1);
+        }
+        return out;
+    }
+
+    /// planning-joint values from a request's map; every planning joint must be named
+    void fillState(const RobotModel &robot, const std::map<std::string, double> &values, const std::string &what,
+                   const std::string &file, ompl::base::State *state)
+    {
+        auto *q = state->as<ompl::base::RealVectorStateSpace::StateType>()->values;
+        for (std::size_t i = 0; i < robot.dof(); ++i)
+        {
+            auto it = values.find(robot.joints()[i].name);
+            if (it == values.end())
+                throw Error(file + ": the " + what + " does not give planning joint '" + robot.joints()[i].name + "'");
+            q[i] = it->second;
+        }
+    }
+
+    double pathLength(const ompl::geometric::PathGeometric &path)
+    {
+        return path.length();
+    }
+
+    int run(const PlanArgs &a)
+    {
+        ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+        ompl::RNG::setSeed(a.seed);
+        auto environment = std::make_shared<Environment>(loadPlanningScene(a.scene));
+        const MotionPlanRequest request = loadMotionPlanRequest(a.request);
+        PlanningContextOptions options;
+        options.planner = a.planner;
+        options.plannerParams = parseParams(a.params);
+        options.resolution = a.resolution;
+        PlanningContext context = makePlanningContext(a.urdf, a.srdf, environment, RobotModel::Options(), options);
+        const RobotModel &robot = *context.robot;
+        auto &ss = *context.setup;
+
+        ompl::base::ScopedState<> start(ss.getStateSpace()), goal(ss.getStateSpace());
+        fillState(robot, request.start, "start state", a.request, start.get());
+        fillState(robot, request.goal, "goal", a.request, goal.get());
+        if (!context.validityChecker->isValid(start.get()))
+            throw Error(a.request + ": the start state is invalid (in collision or outside the joint limits)");
+        if (!context.validityChecker->isValid(goal.get()))
+            throw Error(a.request + ": the goal state is invalid (in collision or outside the joint limits)");
+        ss.setStartAndGoalStates(start, goal);
+        ss.setup();
+
+        const auto t0 = std::chrono::steady_clock::now();
+        const ompl::base::PlannerStatus status = ss.solve(ompl::base::timedPlannerTerminationCondition(a.time));
+        const double planUs = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+        const bool solved = status == ompl::base::PlannerStatus::EXACT_SOLUTION;
+        std::cout << "robot " << robot.name() << " (" << robot.dof() << " joints, " << robot.spheres().size()
+                  << " spheres), scene " << a.scene << " (" << environment->objectCount() << " objects)\n"
+                  << "planner " << ss.getPlanner()->getName() << ": " << status.asString() << " in " << std::fixed
+                  << std::setprecision(1) << planUs << " us\n";
+        if (!solved)
+            return 1;
+        auto &path = ss.getSolutionPath();
+        std::cout << "path: " << path.getStateCount() << " states, length " << std::setprecision(4) << pathLength(path)
+                  << " rad\n";
+        if (a.simplify)
+        {
+            const auto s0 = std::chrono::steady_clock::now();
+            ss.simplifySolution();
+            const double simpUs =
+                std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - s0).count();
+            std::cout << "simplified in " << std::setprecision(1) << simpUs << " us: " << path.getStateCount()
+                      << " states, length " << std::setprecision(4) << pathLength(path) << " rad\n";
+        }
+        const bool valid = path.check();
+        std::cout << "path check: " << (valid ? "valid" : "INVALID") << '\n';
+        if (!a.out.empty())
+        {
+            std::ofstream out(a.out);
+            if (!out)
+                throw Error("cannot write " + a.out);
+            for (std::size_t i = 0; i < robot.dof(); ++i)
+                out << (i ? "," : "") << robot.joints()[i].name;
+            out << '\n' << std::setprecision(10);
+            for (std::size_t k = 0; k < path.getStateCount(); ++k)
+            {
+                const auto *q = path.getState(k)->as<ompl::base::RealVectorStateSpace::StateType>()->values;
+                for (std::size_t i = 0; i < robot.dof(); ++i)
+                    out << (i ? "," : "") << q[i];
+                out << '\n';
+            }
+            std::cout << "wrote " << a.out << '\n';
+        }
+        return valid ? 0 : 1;
+    }
+
+    std::function<int()> setup(CLI::App &app)
+    {
+        auto args = std::make_shared<PlanArgs>();
+        app.add_option("--urdf", args->urdf, "robot URDF")->required()->check(CLI::ExistingFile);
+        app.add_option("--srdf", args->srdf, "SRDF (disabled self-collision pairs)")->check(CLI::ExistingFile);
+        app.add_option("--scene", args->scene, "MoveIt PlanningScene YAML")->required()->check(CLI::ExistingFile);
+        app.add_option("--request", args->request, "MoveIt MotionPlanRequest YAML")
+            ->required()
+            ->check(CLI::ExistingFile);
+        app.add_option("--planner", args->planner, "planner name (see `ropras planners`)")->capture_default_str();
+        app.add_option("--param", args->params, "planner parameter key=value (repeatable)");
+        app.add_option("--time", args->time, "planning time limit (s)")
+            ->capture_default_str()
+            ->check(CLI::PositiveNumber);
+        app.add_option("--resolution", args->resolution, "motion-check joint step (rad)")->capture_default_str();
+        app.add_flag("--simplify", args->simplify, "simplify the path (OMPL's simplifySolution)");
+        app.add_option("--out", args->out, "write the joint-space path as CSV");
+        app.add_option("--seed", args->seed, "OMPL random seed")->capture_default_str();
+        return [args] { return run(*args); };
+    }
+
+    int listPlanners()
+    {
+        for (const std::string &name : PlannerRegistry::instance().names())
+            std::cout << name << '\n';
+        return 0;
+    }
+
+    const ropras::bin::CommandRegistrar planCommand{
+        {"plan", "plan one MoveIt problem with any OMPL planner using the ropras validators", setup}};
+    const ropras::bin::CommandRegistrar plannersCommand{{"planners", "list the planners available by name",
+                                                         [](CLI::App &)
+                                                         { return std::function<int()>(listPlanners); }}};
+}  // namespace

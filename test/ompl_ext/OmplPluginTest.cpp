@@ -1,0 +1,363 @@
+// The OMPL contract of ropras' StateValidityChecker and MotionValidator, the planner registry, and planners
+// solving MotionBenchMaker problems through them.
+#include <gtest/gtest.h>
+
+#include <ompl/base/DiscreteMotionValidator.h>
+#include <ompl/base/PlannerTerminationCondition.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
+#include <atomic>
+#include <filesystem>
+#include <random>
+#include <thread>
+
+#include "ropras/core/Error.h"
+#include "ropras/ompl_ext/PlannerRegistry.h"
+#include "ropras/ompl_ext/PlanningContext.h"
+#include "ropras/ompl_ext/SceneYaml.h"
+
+namespace fs = std::filesystem;
+using namespace ropras::ompl_ext;
+
+namespace
+{
+    const fs::path SHARED = ROPRAS_SHARED_DIR;
+
+    bool haveShared()
+    {
+        return fs::exists(SHARED / "robots/panda/panda_spherized.urdf");
+    }
+
+    PlanningContext pandaContext(const std::string &category, int problem, const PlanningContextOptions &options = {})
+    {
+        char name[32];
+        std::snprintf(name, sizeof name, "scene%04d.yaml", problem);
+        auto env = std::make_shared<Environment>(loadPlanningScene((SHARED / "mbm/panda" / category / name).string()));
+        return makePlanningContext((SHARED / "robots/panda/panda_spherized.urdf").string(),
+                                   (SHARED / "robots/panda/panda.srdf").string(), env, RobotModel::Options(), options);
+    }
+
+    double *values(ompl::base::State *s)
+    {
+        return s->as<ompl::base::RealVectorStateSpace::StateType>()->values;
+    }
+
+    /// first invalid sample index j in 1..n along q0 -> q1 at max-joint step \a res (0 if all valid), and n
+    std::pair<int, int> firstInvalidSample(const PlanningContext &c, const double *q0, const double *q1, double res)
+    {
+        const std::size_t dof = c.robot->dof();
+        double linf = 0.0;
+        for (std::size_t k = 0; k < dof; ++k)
+            linf = std::max(linf, std::abs(q1[k] - q0[k]));
+        const int n = std::max(1, static_cast<int>(std::ceil(linf / res)));
+        std::vector<double> q(dof);
+        for (int i = 1; i <= n; ++i)
+        {
+            const double t = static_cast<double>(i) / n;
+            for (std::size_t k = 0; k < dof; ++k)
+                q[k] = q0[k] + t * (q1[k] - q0[k]);
+            if (!c.checker->isValid(*c.validityChecker->environment(), q.data()))
+                return {i, n};
+        }
+        return {0, n};
+    }
+}  // namespace
+
+#define REQUIRE_SHARED() \
+    if (!haveShared())   \
+    GTEST_SKIP() << "../shared not found at " << SHARED << ": the Panda and MBM problems are needed"
+
+TEST(OmplPlugin, MotionContractMatchesDenseReference)
+{
+    REQUIRE_SHARED();
+    PlanningContext c = pandaContext("table_pick", 1);
+    const auto &si = c.spaceInformation();
+    auto sampler = si->allocStateSampler();
+    ompl::base::State *s1 = si->allocState(), *s2 = si->allocState(), *last = si->allocState();
+    ompl::RNG::setSeed(7);
+    int invalidMotions = 0, validMotions = 0;
+    const double step = 1.0 / c.motionValidator->resolution();
+    for (int trial = 0; trial < 600; ++trial)
+    {
+        do
+            sampler->sampleUniform(s1);
+        while (!c.validityChecker->isValid(s1));
+        sampler->sampleUniformNear(s2, s1, 1.5);
+        const auto [j, n] = firstInvalidSample(c, values(s1), values(s2), c.motionValidator->resolution());
+        std::pair<ompl::base::State *, double> lastValid{last, -1.0};
+        const bool ok = c.motionValidator->checkMotion(s1, s2, lastValid);
+        ASSERT_EQ(ok, j == 0) << "trial " << trial;
+        if (ok)
+        {
+            ++validMotions;
+            EXPECT_EQ(lastValid.second, -1.0) << "lastValid must be untouched on success";
+            continue;
+        }
+        ++invalidMotions;
+        const double expected = static_cast<double>(j - 1) / n;
+        EXPECT_NEAR(lastValid.second, expected, 1e-12) << "trial " << trial << ", n = " << n;
+        EXPECT_TRUE(c.validityChecker->isValid(last)) << "lastValid.first must be a valid state";
+        ompl::base::State *interp = si->allocState();
+        si->getStateSpace()->interpolate(s1, s2, lastValid.second, interp);
+        EXPECT_LT(si->distance(interp, last), 1e-9);
+        si->freeState(interp);
+    }
+    (void)step;
+    EXPECT_GT(invalidMotions, 50);
+    EXPECT_GT(validMotions, 50);
+    EXPECT_EQ(c.motionValidator->getValidMotionCount(), static_cast<unsigned>(validMotions));
+    EXPECT_EQ(c.motionValidator->getInvalidMotionCount(), static_cast<unsigned>(invalidMotions));
+    si->freeState(s1);
+    si->freeState(s2);
+    si->freeState(last);
+}
+
+TEST(OmplPlugin, AgreesWithDiscreteMotionValidatorOnSingleJointMotions)
+{
+    // Along one joint, L2 and max-norm steps coincide: OMPL's DiscreteMotionValidator at the same step checks
+    // exactly the same configurations, so verdicts, lastValid times and counters must agree.
+    REQUIRE_SHARED();
+    PlanningContext c = pandaContext("bookshelf_small", 2);
+    const auto &si = c.spaceInformation();
+    const double res = c.motionValidator->resolution();
+    si->setStateValidityCheckingResolution(res / si->getMaximumExtent());
+    si->getStateSpace()->setup();  // the longest valid segment is computed in setup()
+    ompl::base::DiscreteMotionValidator dmv(si);
+    auto sampler = si->allocStateSampler();
+    ompl::base::State *s1 = si->allocState(), *s2 = si->allocState();
+    ompl::base::State *l1 = si->allocState(), *l2 = si->allocState();
+    std::mt19937 rng(11);
+    ompl::RNG::setSeed(11);
+    int compared = 0, invalid = 0;
+    while (compared < 400)
+    {
+        do
+            sampler->sampleUniform(s1);
+        while (!c.validityChecker->isValid(s1));
+        si->copyState(s2, s1);
+        const std::size_t k = rng() % c.robot->dof();
+        const auto &joint = c.robot->joints()[k];
+        values(s2)[k] = std::uniform_real_distribution<double>(joint.lower, joint.upper)(rng);
+        const double steps = std::abs(values(s2)[k] - values(s1)[k]) / res;
+        if (std::abs(steps - std::round(steps)) < 1e-6)
+            continue;  // avoid a tie in ceil() between the two step computations
+        std::pair<ompl::base::State *, double> a{l1, -1.0}, b{l2, -1.0};
+        const bool ours = c.motionValidator->checkMotion(s1, s2, a);
+        const bool theirs = dmv.checkMotion(s1, s2, b);
+        ASSERT_EQ(ours, theirs) << "motion " << compared;
+        if (!ours)
+        {
+            ++invalid;
+            EXPECT_NEAR(a.second, b.second, 1e-9) << "motion " << compared;
+        }
+        ++compared;
+    }
+    EXPECT_GT(invalid, 40);
+    EXPECT_EQ(c.motionValidator->getValidMotionCount(), dmv.getValidMotionCount());
+    EXPECT_EQ(c.motionValidator->getInvalidMotionCount(), dmv.getInvalidMotionCount());
+    for (auto *s : {s1, s2, l1, l2})
+        si->freeState(s);
+}
+
+TEST(OmplPlugin, ConcurrentChecksGiveSameVerdictsAndExactCounts)
+{
+    REQUIRE_SHARED();
+    PlanningContext c = pandaContext("cage", 3);
+    const auto &si = c.spaceInformation();
+    auto sampler = si->allocStateSampler();
+    ompl::RNG::setSeed(5);
+    const int N = 300;
+    std::vector<ompl::base::State *> a(N), b(N);
+    std::vector<int> expected(N), expectedState(N);
+    for (int i = 0; i < N; ++i)
+    {
+        a[i] = si->allocState();
+        b[i] = si->allocState();
+        sampler->sampleUniform(a[i]);
+        sampler->sampleUniformNear(b[i], a[i], 1.0);
+        expectedState[i] = c.validityChecker->isValid(b[i]);
+        expected[i] = c.motionValidator->checkMotion(a[i], b[i]);
+    }
+    c.motionValidator->resetMotionCounter();
+    const int threads = 4;
+    std::atomic<int> mismatches{0};
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t)
+        pool.emplace_back(
+            [&]
+            {
+                for (int i = 0; i < N; ++i)
+                {
+                    if (c.motionValidator->checkMotion(a[i], b[i]) != static_cast<bool>(expected[i]))
+                        ++mismatches;
+                    if (c.validityChecker->isValid(b[i]) != static_cast<bool>(expectedState[i]))
+                        ++mismatches;
+                }
+            });
+    for (auto &th : pool)
+        th.join();
+    EXPECT_EQ(mismatches.load(), 0);
+    EXPECT_EQ(c.motionValidator->getCheckedMotionCount(), static_cast<unsigned>(threads * N));
+    const unsigned validPerRound = static_cast<unsigned>(std::count(expected.begin(), expected.end(), 1));
+    EXPECT_EQ(c.motionValidator->getValidMotionCount(), threads * validPerRound);
+    for (int i = 0; i < N; ++i)
+    {
+        si->freeState(a[i]);
+        si->freeState(b[i]);
+    }
+}
+
+TEST(OmplPlugin, BatchStateCheckMatchesSingleChecks)
+{
+    REQUIRE_SHARED();
+    PlanningContext c = pandaContext("box", 4);
+    const auto &si = c.spaceInformation();
+    auto sampler = si->allocStateSampler();
+    ompl::RNG::setSeed(9);
+    const int N = 203;  // not a multiple of the SIMD width
+    std::vector<ompl::base::State *> states(N);
+    for (auto &s : states)
+    {
+        s = si->allocState();
+        sampler->sampleUniform(s);
+    }
+    std::unique_ptr<bool[]> verdicts(new bool[N]);
+    const std::size_t valid = c.validityChecker->isValidBatch(states.data(), N, verdicts.get());
+    std::size_t count = 0;
+    for (int i = 0; i < N; ++i)
+    {
+        EXPECT_EQ(verdicts[i], c.validityChecker->isValid(states[i])) << i;
+        count += verdicts[i];
+    }
+    EXPECT_EQ(valid, count);
+    EXPECT_GT(count, 0u);
+    EXPECT_LT(count, static_cast<std::size_t>(N));
+    for (auto *s : states)
+        si->freeState(s);
+}
+
+TEST(OmplPlugin, EnvironmentSwapIsSeenByBothValidators)
+{
+    REQUIRE_SHARED();
+    PlanningContext c = pandaContext("table_pick", 5);
+    const auto &si = c.spaceInformation();
+    ompl::base::State *s = si->allocState();
+    for (std::size_t k = 0; k < c.robot->dof(); ++k)
+        values(s)[k] = 0.5 * (c.robot->joints()[k].lower + c.robot->joints()[k].upper);
+    auto empty = std::make_shared<Environment>();
+    c.setEnvironment(empty);
+    const bool freeInEmpty = c.validityChecker->isValid(s);
+    auto blocked = std::make_shared<Environment>();
+    blocked->addSphere("blob", Eigen::Vector3d::Zero(), 3.0);  // swallows the whole robot
+    c.setEnvironment(blocked);
+    EXPECT_FALSE(c.validityChecker->isValid(s));
+    EXPECT_FALSE(c.motionValidator->checkMotion(s, s));
+    c.setEnvironment(empty);
+    EXPECT_EQ(c.validityChecker->isValid(s), freeInEmpty);
+    EXPECT_THROW(c.setEnvironment(nullptr), ropras::Error);
+    si->freeState(s);
+}
+
+TEST(OmplPlugin, RegistryCreatesEveryPlannerAndRejectsBadNames)
+{
+    auto space = std::make_shared<ompl::base::RealVectorStateSpace>(3);
+    space->setBounds(-1, 1);
+    auto si = std::make_shared<ompl::base::SpaceInformation>(space);
+    si->setStateValidityChecker([](const ompl::base::State *) { return true; });
+    si->setup();
+    auto &registry = PlannerRegistry::instance();
+    const auto names = registry.names();
+    EXPECT_GE(names.size(), 39u);
+    for (const std::string &name : names)
+    {
+        ompl::base::PlannerPtr planner = registry.create(name, si);
+        ASSERT_TRUE(planner) << name;
+    }
+    EXPECT_TRUE(registry.contains("VectorizedRRTConnect"));
+    try
+    {
+        registry.create("RRTConect", si);
+        FAIL() << "unknown planner accepted";
+    }
+    catch (const ropras::Error &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("RRTConect"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("RRTConnect"), std::string::npos) << "the message lists valid names";
+    }
+    auto rrt = registry.create("RRTConnect", si, {{"range", "0.25"}});
+    EXPECT_EQ(rrt->params().getParams().size(), rrt->params().getParams().size());
+    std::string range;
+    ASSERT_TRUE(rrt->params().getParam("range", range));
+    EXPECT_DOUBLE_EQ(std::stod(range), 0.25);
+    try
+    {
+        registry.create("RRTConnect", si, {{"rnage", "0.25"}});
+        FAIL() << "unknown parameter accepted";
+    }
+    catch (const ropras::Error &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("rnage"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("range"), std::string::npos) << "the message lists valid parameters";
+    }
+}
+
+namespace
+{
+    /// solves 2 problems per MBM category with \a planner; returns the number solved (out of 14)
+    int solveMbmSample(const std::string &planner, double timeLimit)
+    {
+        const char *categories[] = {"bookshelf_small", "bookshelf_tall",  "bookshelf_thin", "box", "cage",
+                                    "table_pick",      "table_under_pick"};
+        int solved = 0;
+        for (const char *category : categories)
+            for (int problem : {1, 2})
+            {
+                PlanningContextOptions options;
+                options.planner = planner;
+                PlanningContext c = pandaContext(category, problem, options);
+                char name[32];
+                std::snprintf(name, sizeof name, "request%04d.yaml", problem);
+                const auto request = loadMotionPlanRequest((SHARED / "mbm/panda" / category / name).string());
+                ompl::base::ScopedState<> start(c.setup->getStateSpace()), goal(c.setup->getStateSpace());
+                for (std::size_t k = 0; k < c.robot->dof(); ++k)
+                {
+                    start[k] = request.start.at(c.robot->joints()[k].name);
+                    goal[k] = request.goal.at(c.robot->joints()[k].name);
+                }
+                c.setup->setStartAndGoalStates(start, goal);
+                c.setup->setup();
+                auto ptc = ompl::base::plannerOrTerminationCondition(
+                    ompl::base::timedPlannerTerminationCondition(timeLimit),
+                    ompl::base::exactSolnPlannerTerminationCondition(c.setup->getProblemDefinition()));
+                if (c.setup->solve(ptc) == ompl::base::PlannerStatus::EXACT_SOLUTION &&
+                    c.setup->getSolutionPath().check())
+                    ++solved;
+            }
+        return solved;
+    }
+}  // namespace
+
+class MbmPlanners : public ::testing::TestWithParam<std::pair<const char *, int>>
+{
+};
+
+TEST_P(MbmPlanners, SolvesMbmProblemsWithFixedSeeds)
+{
+    REQUIRE_SHARED();
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    const auto [planner, minSolved] = GetParam();
+    ompl::RNG::setSeed(42);  // each test runs in its own process under ctest
+    const int solved = solveMbmSample(planner, 2.0);
+    RecordProperty("solved", solved);
+    EXPECT_GE(solved, minSolved) << planner << " solved " << solved << "/14";
+}
+
+// Success thresholds out of 14 problems (2 per category), 2 s each; no wall-clock assertion. Measured here
+// (2026-11, this machine): RRTConnect 14, VectorizedRRTConnect 14, LBKPIECE1 14, BiTRRT 14, PRM 10, BITstar 10,
+// KPIECE1 9: the thresholds leave a margin for a loaded CI machine.
+INSTANTIATE_TEST_SUITE_P(Planners, MbmPlanners,
+                         ::testing::Values(std::make_pair("RRTConnect", 14), std::make_pair("VectorizedRRTConnect", 14),
+                                           std::make_pair("PRM", 8), std::make_pair("KPIECE1", 8),
+                                           std::make_pair("LBKPIECE1", 10), std::make_pair("BiTRRT", 12),
+                                           std::make_pair("BITstar", 8)),
+                         [](const auto &info) { return std::string(info.param.first); });
