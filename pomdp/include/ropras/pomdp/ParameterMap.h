@@ -1,0 +1,48 @@
+#ifndef ROPRAS_POMDP_PARAMETER_MAP_H
+#define ROPRAS_POMDP_PARAMETER_MAP_H
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace ropras::pomdp
+{
+    /** \brief Named numeric parameters of solvers and models ("eta" -> 0.2), e.g. from `--param eta=0.2`.
+
+        Readers take values with get(); once every reader is done, requireAllUsed() throws ropras::Error
+        naming any parameter nobody read (a misspelt name is an error, never silently ignored). Values must
+        be finite. */
+    class ParameterMap
+    {
+    public:
+        ParameterMap() = default;
+
+        /** \brief Parses "name=value" strings; throws ropras::Error on a malformed entry, a non-numeric or
+            non-finite value, or a duplicate name. */
+        static ParameterMap parse(const std::vector<std::string> &entries);
+
+        /** \brief Sets \a name; throws ropras::Error for an empty name or a non-finite value. */
+        void set(const std::string &name, double value);
+
+        bool contains(const std::string &name) const { return values_.count(name) != 0; }
+
+        /** \brief The value of \a name or \a fallback; marks \a name as used. */
+        double get(const std::string &name, double fallback) const;
+
+        /** \brief Like get() for a count: throws ropras::Error if the value is negative or not an integer. */
+        std::size_t getCount(const std::string &name, std::size_t fallback) const;
+
+        /** \brief Throws ropras::Error naming every parameter that no get() read (\a context names the
+            reader, e.g. "solver ropras3 on model tiger"); names in \a exempt are not checked. */
+        void requireAllUsed(const std::string &context, const std::set<std::string> &exempt = {}) const;
+
+        const std::map<std::string, double> &values() const { return values_; }
+
+    private:
+        std::map<std::string, double> values_;
+        mutable std::set<std::string> used_;
+    };
+}  // namespace ropras::pomdp
+
+#endif

@@ -1,0 +1,410 @@
+#ifndef ROPRAS_POMDP_ROP_RAS3_SOLVER_H
+#define ROPRAS_POMDP_ROP_RAS3_SOLVER_H
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ropras/core/Error.h"
+#include "ropras/pomdp/MacroAction.h"
+#include "ropras/pomdp/Model.h"
+#include "ropras/pomdp/ParameterMap.h"
+#include "ropras/pomdp/ParticleArena.h"
+#include "ropras/pomdp/ReferencePolicy.h"
+#include "ropras/pomdp/SoftBackup.h"
+#include "ropras/pomdp/Solver.h"
+
+namespace ropras::pomdp
+{
+    /** \brief Parameters of ROP-RAS3 (and Ref-Basic, which is ROP-RAS3 with a uniform reference policy). */
+    struct RopRas3Settings
+    {
+        /** \brief Temperature eta > 0 of the reference-based backup. */
+        double eta{0.2};
+        /** \brief Action progressive widening: a new child iff |C(b)| <= betaA * N(b)^alphaA. */
+        double betaA{6.0};
+        double alphaA{0.05};
+        /** \brief D: nodes at depth > D (macro levels below the root, root = 0) return a rollout. */
+        unsigned maxDepth{50};
+        /** \brief Primitive steps of the rollout below depth D (0 = value 0 / heuristic value only). */
+        unsigned rolloutSteps{10};
+        /** \brief Cap on the particles kept per belief node (uniform subsample); 0 = keep all (the paper). */
+        unsigned maxParticlesPerNode{0};
+        /** \brief Executed action: false = argmax Q (default), true = sample pi*(a|b) ~ exp(eta Q). */
+        bool sampleAction{false};
+        /** \brief Measure time spent in the model and in the reference policy (two clock reads per call). */
+        bool profile{false};
+
+        /** \brief Reads eta, beta_a, alpha_a, depth, rollout_steps, max_particles, sample_action, profile;
+            throws ropras::Error for out-of-range values. */
+        static RopRas3Settings fromParameters(const ParameterMap &p)
+        {
+            RopRas3Settings s;
+            s.eta = p.get("eta", s.eta);
+            s.betaA = p.get("beta_a", s.betaA);
+            s.alphaA = p.get("alpha_a", s.alphaA);
+            s.maxDepth = static_cast<unsigned>(p.getCount("depth", s.maxDepth));
+            s.rolloutSteps = static_cast<unsigned>(p.getCount("rollout_steps", s.rolloutSteps));
+            s.maxParticlesPerNode = static_cast<unsigned>(p.getCount("max_particles", s.maxParticlesPerNode));
+            s.sampleAction = p.getCount("sample_action", 0) != 0;
+            s.profile = p.getCount("profile", 0) != 0;
+            s.validate();
+            return s;
+        }
+
+        void validate() const
+        {
+            if (!(eta > 0.0) || !std::isfinite(eta))
+            {
+                throw Error("ROP-RAS3: eta = " + std::to_string(eta) + " must be > 0");
+            }
+            if (!(betaA > 0.0) || !std::isfinite(betaA) || !(alphaA >= 0.0) || !std::isfinite(alphaA))
+            {
+                throw Error("ROP-RAS3: beta_a = " + std::to_string(betaA) + ", alpha_a = " + std::to_string(alphaA) +
+                            " must be > 0 and >= 0");
+            }
+        }
+    };
+
+    /** \brief ROP-RAS3 (Algorithm 2 of the paper) over a model M.
+
+        Depth-first Simulate from the root: sample a particle s of the node; below depth D return a rollout;
+        otherwise ActionProgressiveWiden (a new macro from the reference policy, started at s, iff
+        |C(b)| <= beta_a N(b)^alpha_a, else a uniformly chosen existing child), run the macro with the
+        generative model, bin the macro observation (MacroStepResult::observationKey), add s' to the child's
+        particles, recurse, and Backup: N(b)++, N(ba)++, Q(ba) += (r - Q)/N(ba) with
+        r = macro reward + gamma^len V(child), and the soft value update softValueUpdate(). The executed
+        action is read off the root with pi*(a|b) ~ pibar(a|b) exp(eta Q(b,a)): children were drawn from
+        pibar, so this is argmax Q (default) or a softmax sample over the children.
+
+        Deviations (documented in doc/pomdp.md): observation widening is replaced by binning (as in the
+        paper's implementation); when the reference policy fails at a node without children the simulation
+        returns a rollout from s without a backup at that node; terminal outcomes do not create a child.
+
+        All tree storage (nodes, macro pool, particle arena) is flat and reused across plan() calls. */
+    template <class M>
+    class RopRas3Solver final : public Solver<M>
+    {
+    public:
+        using State = typename M::State;
+        using Action = typename M::Action;
+
+        RopRas3Solver(std::shared_ptr<const M> model, std::unique_ptr<ReferencePolicy<M>> reference,
+                      const RopRas3Settings &settings, std::string name = "ropras3")
+            : model_(std::move(model)), reference_(std::move(reference)), settings_(settings), name_(std::move(name))
+        {
+            if (!model_ || !reference_)
+            {
+                throw Error("RopRas3Solver: missing model or reference policy");
+            }
+            settings_.validate();
+        }
+
+        std::string name() const override { return name_; }
+
+        const RopRas3Settings &settings() const { return settings_; }
+
+        PlanResult<Action> plan(BeliefView<State> belief, const Budget &budget, Rng &rng) override
+        {
+            if (belief.empty())
+            {
+                throw Error(name_ + ": plan() called with an empty belief");
+            }
+            detail::BudgetGuard guard(budget);
+            reset();
+            stats_ = SearchStatistics{};
+            const std::uint32_t root = newBeliefNode(0);
+            arena_.assign(beliefs_[root].particles, belief.particles, belief.size);
+            std::size_t done = 0;
+            while (!guard.exhausted(done))
+            {
+                simulate(root, 0, rng);
+                ++done;
+            }
+            stats_.simulations = done;
+            stats_.seconds = guard.elapsed();
+            stats_.beliefNodes = beliefs_.size();
+            stats_.actionNodes = actions_.size();
+            stats_.rootValue = beliefs_[root].value;
+            PlanResult<Action> result;
+            result.statistics = stats_;
+            const std::uint32_t best = selectRootAction(rng);
+            if (best != NONE)
+            {
+                const auto &a = actions_[best];
+                result.action.assign(macroPool_.begin() + a.macroOffset,
+                                     macroPool_.begin() + a.macroOffset + a.macroLength);
+                result.valid = true;
+            }
+            return result;
+        }
+
+        /** \brief Root children after the last plan(): (Q, N) pairs, for tests and diagnostics. */
+        std::vector<std::pair<double, std::uint32_t>> rootChildren() const
+        {
+            std::vector<std::pair<double, std::uint32_t>> out;
+            if (beliefs_.empty())
+            {
+                return out;
+            }
+            for (const std::uint32_t a : childArena_.view(beliefs_[0].children))
+            {
+                out.emplace_back(actions_[a].q, actions_[a].visits);
+            }
+            return out;
+        }
+
+    private:
+        static constexpr std::uint32_t NONE = std::numeric_limits<std::uint32_t>::max();
+
+        struct BeliefNode
+        {
+            std::uint64_t key{0};
+            std::uint32_t nextSibling{NONE};
+            std::uint32_t visits{0};
+            double value{0.0};
+            /** \brief Widening: a new child is due while visits >= widenAt, i.e. |C| <= beta N^alpha. */
+            double widenAt{0.0};
+            typename ParticleArena<State>::Segment particles;
+            /** \brief The action children (indices into actions_), contiguous for O(1) uniform choice. */
+            ParticleArena<std::uint32_t>::Segment children;
+        };
+
+        struct ActionNode
+        {
+            std::uint32_t macroOffset{0};
+            std::uint32_t macroLength{0};
+            std::uint32_t firstChild{NONE};
+            std::uint32_t visits{0};
+            double q{0.0};
+        };
+
+        void reset()
+        {
+            beliefs_.clear();
+            actions_.clear();
+            macroPool_.clear();
+            arena_.clear();
+            childArena_.clear();
+        }
+
+        std::uint32_t newBeliefNode(std::uint64_t key)
+        {
+            beliefs_.emplace_back();
+            beliefs_.back().key = key;
+            return static_cast<std::uint32_t>(beliefs_.size() - 1);
+        }
+
+        double rollout(const State &s, Rng &rng) noexcept
+        {
+            if (!settings_.profile)
+            {
+                return rolloutValue(*model_, s, settings_.rolloutSteps, rng);
+            }
+            const auto start = detail::Clock::now();
+            const double v = rolloutValue(*model_, s, settings_.rolloutSteps, rng);
+            stats_.modelSeconds += detail::secondsSince(start);
+            return v;
+        }
+
+        /** \brief ActionProgressiveWiden; NONE when a new macro was due, the reference failed and there is
+            no child to fall back on. */
+        std::uint32_t progressiveWiden(std::uint32_t b, const State &s, Rng &rng)
+        {
+            // |C| <= beta N^alpha  <=>  N >= (|C| / beta)^(1 / alpha); the threshold is recomputed only when
+            // a child is added (N = 0 admits the first child for any alpha > 0, as 0^alpha = 0).
+            if (static_cast<double>(beliefs_[b].visits) >= beliefs_[b].widenAt)
+            {
+                const std::uint32_t created = newAction(b, s, rng);
+                if (created != NONE)
+                {
+                    return created;
+                }
+            }
+            if (beliefs_[b].children.size == 0)
+            {
+                return NONE;
+            }
+            return childArena_.sample(beliefs_[b].children, rng);
+        }
+
+        std::uint32_t newAction(std::uint32_t b, const State &s, Rng &rng)
+        {
+            scratch_.clear();
+            ++stats_.referenceRequested;
+            bool ok;
+            if (settings_.profile)
+            {
+                const auto start = detail::Clock::now();
+                ok = reference_->sample(s, arena_.view(beliefs_[b].particles), rng, scratch_);
+                stats_.referenceSeconds += detail::secondsSince(start);
+            }
+            else
+            {
+                ok = reference_->sample(s, arena_.view(beliefs_[b].particles), rng, scratch_);
+            }
+            if (!ok || scratch_.empty())
+            {
+                ++stats_.referenceFailed;
+                return NONE;
+            }
+            ActionNode action;
+            action.macroOffset = static_cast<std::uint32_t>(macroPool_.size());
+            action.macroLength = static_cast<std::uint32_t>(scratch_.size());
+            macroPool_.insert(macroPool_.end(), scratch_.begin(), scratch_.end());
+            actions_.push_back(action);
+            const auto index = static_cast<std::uint32_t>(actions_.size() - 1);
+            childArena_.add(beliefs_[b].children, index, 0, rng);
+            beliefs_[b].widenAt = widenThreshold(beliefs_[b].children.size);
+            return index;
+        }
+
+        /** \brief Visits at which the next child is admitted when a node has \a children (cached table). */
+        double widenThreshold(std::uint32_t children)
+        {
+            while (widenTable_.size() <= children)
+            {
+                widenTable_.push_back(computeWidenThreshold(static_cast<std::uint32_t>(widenTable_.size())));
+            }
+            return widenTable_[children];
+        }
+
+        double computeWidenThreshold(std::uint32_t children) const noexcept
+        {
+            const double ratio = static_cast<double>(children) / settings_.betaA;
+            if (settings_.alphaA == 0.0)
+            {
+                return ratio <= 1.0 ? 0.0 : std::numeric_limits<double>::infinity();
+            }
+            if (ratio == 0.0)
+            {
+                return 0.0;
+            }
+            return std::pow(ratio, 1.0 / settings_.alphaA);
+        }
+
+        std::uint32_t childFor(std::uint32_t a, std::uint64_t key)
+        {
+            for (std::uint32_t c = actions_[a].firstChild; c != NONE; c = beliefs_[c].nextSibling)
+            {
+                if (beliefs_[c].key == key)
+                {
+                    return c;
+                }
+            }
+            const std::uint32_t c = newBeliefNode(key);
+            beliefs_[c].nextSibling = actions_[a].firstChild;
+            actions_[a].firstChild = c;
+            return c;
+        }
+
+        double simulate(std::uint32_t b, unsigned depth, Rng &rng) noexcept
+        {
+            const State s = arena_.sample(beliefs_[b].particles, rng);
+            if (depth > settings_.maxDepth)
+            {
+                return rollout(s, rng);
+            }
+            if (depth > stats_.maxDepth)
+            {
+                stats_.maxDepth = depth;
+            }
+            const std::uint32_t a = progressiveWiden(b, s, rng);
+            if (a == NONE)
+            {
+                return rollout(s, rng);
+            }
+            const MacroView<Action> macro{macroPool_.data() + actions_[a].macroOffset, actions_[a].macroLength};
+            MacroStepResult<State, typename M::Observation> step;
+            if (settings_.profile)
+            {
+                const auto start = detail::Clock::now();
+                step = executeMacro(*model_, s, macro, rng);
+                stats_.modelSeconds += detail::secondsSince(start);
+            }
+            else
+            {
+                step = executeMacro(*model_, s, macro, rng);
+            }
+            stats_.modelSteps += step.steps;
+            double r = step.reward;
+            if (!step.terminal)
+            {
+                const std::uint32_t c = childFor(a, step.observationKey);
+                arena_.add(beliefs_[c].particles, step.next, settings_.maxParticlesPerNode, rng);
+                r += step.discount * simulate(c, depth + 1, rng);
+            }
+            BeliefNode &node = beliefs_[b];
+            ActionNode &action = actions_[a];
+            ++node.visits;
+            ++action.visits;
+            action.q += (r - action.q) / static_cast<double>(action.visits);
+            node.value = softValueUpdate(node.value, action.q, node.visits, settings_.eta);
+            return node.value;
+        }
+
+        std::uint32_t selectRootAction(Rng &rng) const
+        {
+            const BeliefNode &root = beliefs_[0];
+            std::uint32_t best = NONE;
+            double bestQ = -std::numeric_limits<double>::infinity();
+            double maxQ = -std::numeric_limits<double>::infinity();
+            for (const std::uint32_t a : childArena_.view(root.children))
+            {
+                if (actions_[a].visits == 0)
+                {
+                    continue;
+                }
+                if (actions_[a].q > bestQ)
+                {
+                    bestQ = actions_[a].q;
+                    best = a;
+                }
+                maxQ = std::max(maxQ, settings_.eta * actions_[a].q);
+            }
+            if (!settings_.sampleAction || best == NONE)
+            {
+                return best;
+            }
+            double total = 0.0;
+            for (const std::uint32_t a : childArena_.view(root.children))
+            {
+                if (actions_[a].visits > 0)
+                {
+                    total += std::exp(settings_.eta * actions_[a].q - maxQ);
+                }
+            }
+            double u = rng.uniform01() * total;
+            for (const std::uint32_t a : childArena_.view(root.children))
+            {
+                if (actions_[a].visits > 0)
+                {
+                    u -= std::exp(settings_.eta * actions_[a].q - maxQ);
+                    if (u < 0.0)
+                    {
+                        return a;
+                    }
+                }
+            }
+            return best;
+        }
+
+        std::shared_ptr<const M> model_;
+        std::unique_ptr<ReferencePolicy<M>> reference_;
+        RopRas3Settings settings_;
+        std::string name_;
+        std::vector<BeliefNode> beliefs_;
+        std::vector<ActionNode> actions_;
+        std::vector<Action> macroPool_;
+        std::vector<Action> scratch_;
+        ParticleArena<State> arena_;
+        ParticleArena<std::uint32_t> childArena_;
+        SearchStatistics stats_;
+        std::vector<double> widenTable_;
+    };
+}  // namespace ropras::pomdp
+
+#endif

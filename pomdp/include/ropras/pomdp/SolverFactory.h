@@ -1,0 +1,176 @@
+#ifndef ROPRAS_POMDP_SOLVER_FACTORY_H
+#define ROPRAS_POMDP_SOLVER_FACTORY_H
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "ropras/core/Error.h"
+#include "ropras/pomdp/BPlanSolver.h"
+#include "ropras/pomdp/ParameterMap.h"
+#include "ropras/pomdp/PomcpSolver.h"
+#include "ropras/pomdp/RandomMacroPolicy.h"
+#include "ropras/pomdp/RbssSolver.h"
+#include "ropras/pomdp/ReferencePolicy.h"
+#include "ropras/pomdp/RopRas3Solver.h"
+#include "ropras/pomdp/Solver.h"
+
+namespace ropras::pomdp
+{
+    /** \brief What a model contributes so that every solver can run on it by name. */
+    template <class M>
+    struct ModelComponents
+    {
+        using PolicyFactory = std::function<std::unique_ptr<ReferencePolicy<M>>(const ParameterMap &)>;
+
+        std::shared_ptr<const M> model;
+        /** \brief The informed reference policy (sampling heuristic + connector / motion planner): used by
+            ropras3, rpomcp, bplan and rbss. */
+        PolicyFactory referencePolicy;
+        /** \brief Ref-Basic's uniform reference policy. Empty = RandomMacroPolicy with the parameters
+            macro_min / macro_max (default 1 / 1) over the model's action set. */
+        PolicyFactory basicReferencePolicy;
+        /** \brief Model-specific parameter defaults (e.g. ucb_c scaled to the reward range, depth); user
+            parameters override them. */
+        std::map<std::string, double> defaults;
+    };
+
+    namespace detail
+    {
+        template <class M>
+        std::unique_ptr<ReferencePolicy<M>> informedPolicy(const ModelComponents<M> &c, const ParameterMap &p,
+                                                           const std::string &solver)
+        {
+            if (!c.referencePolicy)
+            {
+                throw Error("solver " + solver + " needs a reference policy, but the model provides none");
+            }
+            return c.referencePolicy(p);
+        }
+
+        template <class M>
+        std::unique_ptr<ReferencePolicy<M>> basicPolicy(const ModelComponents<M> &c, const ParameterMap &p)
+        {
+            if (c.basicReferencePolicy)
+            {
+                return c.basicReferencePolicy(p);
+            }
+            if constexpr (hasActionSet<M>)
+            {
+                const auto lo = static_cast<unsigned>(p.getCount("macro_min", 1));
+                const auto hi = static_cast<unsigned>(p.getCount("macro_max", lo));
+                return std::make_unique<RandomMacroPolicy<M>>(c.model, lo, hi);
+            }
+            else
+            {
+                throw Error("refbasic needs a model with an action set or a basic reference policy");
+            }
+        }
+
+        template <class M>
+        using SolverBuilder = std::unique_ptr<Solver<M>> (*)(const ModelComponents<M> &, const ParameterMap &);
+
+        template <class M>
+        const std::map<std::string, SolverBuilder<M>> &solverTable()
+        {
+            static const std::map<std::string, SolverBuilder<M>> table{
+                {"ropras3",
+                 [](const ModelComponents<M> &c, const ParameterMap &p) -> std::unique_ptr<Solver<M>>
+                 {
+                     const auto settings = RopRas3Settings::fromParameters(p);
+                     return std::make_unique<RopRas3Solver<M>>(c.model, informedPolicy(c, p, "ropras3"), settings,
+                                                               "ropras3");
+                 }},
+                {"refbasic",
+                 [](const ModelComponents<M> &c, const ParameterMap &p) -> std::unique_ptr<Solver<M>>
+                 {
+                     const auto settings = RopRas3Settings::fromParameters(p);
+                     return std::make_unique<RopRas3Solver<M>>(c.model, basicPolicy(c, p), settings, "refbasic");
+                 }},
+                {"pomcp",
+                 [](const ModelComponents<M> &c, const ParameterMap &p) -> std::unique_ptr<Solver<M>> {
+                     return std::make_unique<PomcpSolver<M>>(c.model, nullptr, PomcpSettings::fromParameters(p),
+                                                             "pomcp");
+                 }},
+                {"rpomcp",
+                 [](const ModelComponents<M> &c, const ParameterMap &p) -> std::unique_ptr<Solver<M>>
+                 {
+                     const auto settings = PomcpSettings::fromParameters(p);
+                     return std::make_unique<PomcpSolver<M>>(c.model, informedPolicy(c, p, "rpomcp"), settings,
+                                                             "rpomcp");
+                 }},
+                {"bplan",
+                 [](const ModelComponents<M> &c, const ParameterMap &p) -> std::unique_ptr<Solver<M>>
+                 {
+                     const auto attempts = static_cast<unsigned>(p.getCount("attempts", 10));
+                     p.getCount("profile", 0);  // accepted: B-plan always times its reference calls
+                     return std::make_unique<BPlanSolver<M>>(c.model, informedPolicy(c, p, "bplan"), attempts);
+                 }},
+                {"rbss",
+                 [](const ModelComponents<M> &c, const ParameterMap &p) -> std::unique_ptr<Solver<M>>
+                 {
+                     const auto settings = RbssSettings::fromParameters(p);
+                     p.getCount("profile", 0);  // accepted: RBSS reports no per-call timing
+                     return std::make_unique<RbssSolver<M>>(c.model, informedPolicy(c, p, "rbss"), settings);
+                 }},
+            };
+            return table;
+        }
+    }  // namespace detail
+
+    /** \brief Names of the solvers makeSolver() knows. */
+    template <class M>
+    std::vector<std::string> solverNames()
+    {
+        std::vector<std::string> names;
+        for (const auto &entry : detail::solverTable<M>())
+        {
+            names.push_back(entry.first);
+        }
+        return names;
+    }
+
+    /** \brief \a params with the model's defaults filled in for names the user did not give. */
+    template <class M>
+    ParameterMap withDefaults(const ModelComponents<M> &components, const ParameterMap &params)
+    {
+        ParameterMap merged = params;
+        for (const auto &entry : components.defaults)
+        {
+            if (!merged.contains(entry.first))
+            {
+                merged.set(entry.first, entry.second);
+            }
+        }
+        return merged;
+    }
+
+    /** \brief Builds solver \a name (ropras3, refbasic, pomcp, rpomcp, bplan, rbss) for a model. \a params
+        must already contain the defaults (withDefaults()); unknown solver names throw ropras::Error. */
+    template <class M>
+    std::unique_ptr<Solver<M>> makeSolver(const std::string &name, const ModelComponents<M> &components,
+                                          const ParameterMap &params)
+    {
+        if (!components.model)
+        {
+            throw Error("makeSolver: the model components have no model");
+        }
+        const auto &table = detail::solverTable<M>();
+        const auto it = table.find(name);
+        if (it == table.end())
+        {
+            std::string known;
+            for (const auto &entry : table)
+            {
+                known += (known.empty() ? "" : ", ") + entry.first;
+            }
+            throw Error("unknown solver \"" + name + "\" (known: " + known + ")");
+        }
+        return it->second(components, params);
+    }
+}  // namespace ropras::pomdp
+
+#endif
