@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "EnclosingSphere.h"
 #include "ropras/core/Error.h"
 #include "simd/Avx2Vec.h"
 #include "simd/Kernels.h"
@@ -18,6 +19,9 @@ namespace ropras::ompl_ext
     {
         using simd::KinematicProgram;
         using simd::WIDTH;
+
+        /// collision links with more than WIDTH spheres become program links of at most this many spheres
+        constexpr std::size_t SUB_LINK_SPHERES = 6;
 
         /// per-thread scratch: grows to the largest layout any checker asked for on this thread, then stays
         float *threadScratch(std::size_t floats) noexcept
@@ -381,7 +385,9 @@ namespace ropras::ompl_ext
         const auto &collisionLinks = model.collisionLinks();
         const auto &spheres = model.spheres();
         p.programIndexOfSphere.assign(spheres.size(), -1);
-        std::vector<int> linkIndex(collisionLinks.size(), -1);
+        // program links of each collision link: a link with more than WIDTH spheres is split into groups of at
+        // most SUB_LINK_SPHERES neighbouring spheres, each with its own bound (tighter culling, fewer fine tests)
+        std::vector<std::vector<int>> linkIndex(collisionLinks.size());
         for (std::size_t c = 0; c < collisionLinks.size(); ++c)
         {
             const CollisionLink &cl = collisionLinks[c];
@@ -391,33 +397,77 @@ namespace ropras::ompl_ext
                 cl.firstSphere + cl.sphereCount > static_cast<int>(spheres.size()))
                 throw Error("CollisionChecker: robot '" + model.name() + "' collision link '" + cl.name +
                             "' has an invalid frame or sphere range");
-            simd::LinkOp op;
-            op.frame = cl.frame;
-            op.bx = static_cast<float>(cl.boundCenterInFrame.x());
-            op.by = static_cast<float>(cl.boundCenterInFrame.y());
-            op.bz = static_cast<float>(cl.boundCenterInFrame.z());
-            op.first = static_cast<int>(p.sx.size());
-            op.count = cl.sphereCount;
-            op.padded = static_cast<int>(roundUp(static_cast<std::size_t>(cl.sphereCount)));
-            double bound = cl.boundRadius;
-            for (int k = 0; k < op.padded; ++k)
+            std::vector<int> order(static_cast<std::size_t>(cl.sphereCount));
+            for (int k = 0; k < cl.sphereCount; ++k)
+                order[static_cast<std::size_t>(k)] = cl.firstSphere + k;
+            std::vector<std::vector<int>> groups;
+            if (cl.sphereCount <= WIDTH)
+                groups.push_back(order);
+            else
             {
-                // the block is padded with the link's own spheres again: whole-chunk tests need no masks
-                const int s = cl.firstSphere + k % cl.sphereCount;
-                const CollisionSphere &sphere = spheres[static_cast<std::size_t>(s)];
-                if (k < cl.sphereCount)
-                    p.programIndexOfSphere[static_cast<std::size_t>(s)] = static_cast<int>(p.sx.size());
-                p.sx.push_back(static_cast<float>(sphere.centerInFrame.x()));
-                p.sy.push_back(static_cast<float>(sphere.centerInFrame.y()));
-                p.sz.push_back(static_cast<float>(sphere.centerInFrame.z()));
-                p.sr.push_back(static_cast<float>(sphere.radius));
-                // the bound must enclose every sphere (guards against a loose model bound)
-                bound = std::max(bound, (sphere.centerInFrame - cl.boundCenterInFrame).norm() + sphere.radius);
+                // sort along the axis of largest extent of the centres, then cut into equal contiguous groups
+                Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+                for (const int s : order)
+                {
+                    lo = lo.cwiseMin(spheres[static_cast<std::size_t>(s)].centerInFrame);
+                    hi = hi.cwiseMax(spheres[static_cast<std::size_t>(s)].centerInFrame);
+                }
+                int axis = 0;
+                (hi - lo).maxCoeff(&axis);
+                std::stable_sort(order.begin(), order.end(),
+                                 [&](int x, int y)
+                                 {
+                                     return spheres[static_cast<std::size_t>(x)].centerInFrame[axis] <
+                                            spheres[static_cast<std::size_t>(y)].centerInFrame[axis];
+                                 });
+                const std::size_t n = order.size();
+                const std::size_t g = (n + SUB_LINK_SPHERES - 1) / SUB_LINK_SPHERES;
+                for (std::size_t k = 0; k < g; ++k)
+                    groups.emplace_back(order.begin() + static_cast<std::ptrdiff_t>(k * n / g),
+                                        order.begin() + static_cast<std::ptrdiff_t>((k + 1) * n / g));
             }
-            // float rounding slack: the bound may never cull a touching sphere
-            op.br = static_cast<float>(bound * (1.0 + 1e-5) + 1e-6);
-            linkIndex[c] = static_cast<int>(p.links.size());
-            p.links.push_back(op);
+            for (const std::vector<int> &group : groups)
+            {
+                simd::LinkOp op;
+                op.frame = cl.frame;
+                Eigen::Vector3d centre = cl.boundCenterInFrame;
+                double bound = cl.boundRadius;
+                if (groups.size() > 1)
+                {
+                    std::vector<Sphere> members;
+                    for (const int s : group)
+                        members.push_back({spheres[static_cast<std::size_t>(s)].centerInFrame,
+                                           spheres[static_cast<std::size_t>(s)].radius});
+                    const Sphere e = enclosingSphere(members);
+                    centre = e.center;
+                    bound = e.radius;
+                }
+                op.bx = static_cast<float>(centre.x());
+                op.by = static_cast<float>(centre.y());
+                op.bz = static_cast<float>(centre.z());
+                const int count = static_cast<int>(group.size());
+                op.first = static_cast<int>(p.sx.size());
+                op.count = count;
+                op.padded = static_cast<int>(roundUp(static_cast<std::size_t>(count)));
+                for (int k = 0; k < op.padded; ++k)
+                {
+                    // the block is padded with the group's own spheres again: whole-chunk tests need no masks
+                    const int s = group[static_cast<std::size_t>(k % count)];
+                    const CollisionSphere &sphere = spheres[static_cast<std::size_t>(s)];
+                    if (k < count)
+                        p.programIndexOfSphere[static_cast<std::size_t>(s)] = static_cast<int>(p.sx.size());
+                    p.sx.push_back(static_cast<float>(sphere.centerInFrame.x()));
+                    p.sy.push_back(static_cast<float>(sphere.centerInFrame.y()));
+                    p.sz.push_back(static_cast<float>(sphere.centerInFrame.z()));
+                    p.sr.push_back(static_cast<float>(sphere.radius));
+                    // the bound must enclose every sphere (guards against a loose model bound)
+                    bound = std::max(bound, (sphere.centerInFrame - centre).norm() + sphere.radius);
+                }
+                // float rounding slack: the bound may never cull a touching sphere
+                op.br = static_cast<float>(bound * (1.0 + 1e-5) + 1e-6);
+                linkIndex[c].push_back(static_cast<int>(p.links.size()));
+                p.links.push_back(op);
+            }
         }
         for (std::size_t s = 0; s < spheres.size(); ++s)
             if (p.programIndexOfSphere[s] < 0)
@@ -434,10 +484,18 @@ namespace ropras::ompl_ext
                 pair.second >= static_cast<int>(collisionLinks.size()))
                 throw Error("CollisionChecker: robot '" + model.name() + "' self-collision pair (" +
                             std::to_string(pair.first) + ", " + std::to_string(pair.second) + ") out of range");
-            const int a = linkIndex[static_cast<std::size_t>(pair.first)];
-            const int b = linkIndex[static_cast<std::size_t>(pair.second)];
-            if (a >= 0 && b >= 0)
-                p.selfPairs.emplace_back(a, b);
+            for (const int a : linkIndex[static_cast<std::size_t>(pair.first)])
+                for (const int b : linkIndex[static_cast<std::size_t>(pair.second)])
+                    p.selfPairs.emplace_back(a, b);
+        }
+
+        for (const auto &pair : p.selfPairs)
+        {
+            const float rs =
+                p.links[static_cast<std::size_t>(pair.first)].br + p.links[static_cast<std::size_t>(pair.second)].br;
+            p.selfPairReach2.push_back(rs * rs);
+            p.selfPairOffsetA.push_back(WIDTH * pair.first);
+            p.selfPairOffsetB.push_back(WIDTH * pair.second);
         }
 
         // scratch layouts

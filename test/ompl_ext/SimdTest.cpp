@@ -174,3 +174,123 @@ TEST(SimdTest, Avx2BackendNotCompiled)
     GTEST_SKIP() << "this build does not target AVX2+FMA; only the scalar backend is compiled";
 }
 #endif
+
+// The world boxes the kernels cull obstacles with are conservative: no sphere that penetrates an obstacle
+// (exact double-precision signed distance) nor one the exact float kernel test reports is ever culled.
+#include "../../ompl_ext/src/simd/Kernels.h"
+
+namespace
+{
+    using ropras::ompl_ext::Environment;
+    using ropras::ompl_ext::simd::obstacleBox;
+    using ropras::ompl_ext::simd::ObstacleBox;
+
+    struct CullCounts
+    {
+        int culled{0}, kept{0}, missed{0};
+    };
+
+    /// spheres around the first obstacle of \a env (query form \a o): every penetrating one must be kept
+    template <class O, class Exact>
+    CullCounts checkCulling(const Environment &env, const O &o, const Exact &exact, std::mt19937_64 &rng)
+    {
+        const ObstacleBox box = obstacleBox(o);
+        std::uniform_real_distribution<double> around(-0.8, 0.8), radius(0.005, 0.15);
+        CullCounts counts;
+        for (int k = 0; k < 4000; k += ScalarVec::WIDTH)
+        {
+            float x[8], y[8], z[8], r[8];
+            for (int i = 0; i < 8; ++i)
+            {
+                x[i] = static_cast<float>(box.cx + around(rng));
+                y[i] = static_cast<float>(box.cy + around(rng));
+                z[i] = static_cast<float>(box.cz + around(rng));
+                r[i] = static_cast<float>(radius(rng));
+            }
+            const ScalarVec vx = ScalarVec::load(x), vy = ScalarVec::load(y), vz = ScalarVec::load(z),
+                            vr = ScalarVec::load(r);
+            const unsigned keep = ropras::ompl_ext::simd::sphereTouchesBox(vx, vy, vz, vr, box).bits();
+            const unsigned hit = exact(vx, vy, vz, vr);
+            for (int i = 0; i < 8; ++i)
+            {
+                const bool kept = ((keep >> i) & 1u) != 0u;
+                const double d = env.signedDistance(Eigen::Vector3d(x[i], y[i], z[i]), r[i]);
+                if (!kept && (((hit >> i) & 1u) != 0u || d <= -1e-5))
+                    ++counts.missed;
+                kept ? ++counts.kept : ++counts.culled;
+            }
+        }
+        return counts;
+    }
+
+    Eigen::Isometry3d randomPose(std::mt19937_64 &rng)
+    {
+        std::normal_distribution<double> g(0.0, 1.0);
+        Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
+        p.linear() = Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized().toRotationMatrix();
+        p.translation() = Eigen::Vector3d(g(rng), g(rng), g(rng)) * 0.5;
+        return p;
+    }
+}  // namespace
+
+TEST(SimdTest, ObstacleCullingBoxesAreConservative)
+{
+    using namespace ropras::ompl_ext;
+    using namespace ropras::ompl_ext::simd;
+    std::mt19937_64 rng(2024);
+    std::uniform_real_distribution<double> size(0.02, 0.6);
+    CullCounts total;
+    const auto add = [&](const CullCounts &c)
+    {
+        total.culled += c.culled;
+        total.kept += c.kept;
+        total.missed += c.missed;
+    };
+    for (int trial = 0; trial < 30; ++trial)
+    {
+        {
+            Environment env;
+            env.addBox("b", randomPose(rng), Eigen::Vector3d(size(rng), size(rng), 0.2 * size(rng)));
+            const BoxObstacle &o = env.boxes()[0];
+            add(checkCulling(
+                env, o,
+                [&](const ScalarVec &x, const ScalarVec &y, const ScalarVec &z, const ScalarVec &r)
+                { return hitBox(x, y, z, r, o).bits(); },
+                rng));
+        }
+        {
+            Environment env;
+            env.addCylinder("c", randomPose(rng), 0.5 * size(rng), size(rng));
+            const CylinderObstacle &o = env.cylinders()[0];
+            add(checkCulling(
+                env, o,
+                [&](const ScalarVec &x, const ScalarVec &y, const ScalarVec &z, const ScalarVec &r)
+                { return hitCylinder(x, y, z, r, o).bits(); },
+                rng));
+        }
+        {
+            Environment env;
+            env.addCapsule("k", randomPose(rng), 0.3 * size(rng), size(rng));
+            const CapsuleObstacle &o = env.capsules()[0];
+            add(checkCulling(
+                env, o,
+                [&](const ScalarVec &x, const ScalarVec &y, const ScalarVec &z, const ScalarVec &r)
+                { return hitCapsule(x, y, z, r, o).bits(); },
+                rng));
+        }
+        {
+            Environment env;
+            env.addSphere("s", randomPose(rng).translation(), 0.5 * size(rng));
+            const SphereObstacle &o = env.spheres()[0];
+            add(checkCulling(
+                env, o,
+                [&](const ScalarVec &x, const ScalarVec &y, const ScalarVec &z, const ScalarVec &r)
+                { return hitSphere(x, y, z, r, o).bits(); },
+                rng));
+        }
+    }
+    EXPECT_EQ(total.missed, 0) << "a culling box dropped a penetrating sphere";
+    // both outcomes are exercised, and the boxes do cull
+    EXPECT_GT(total.culled, 50000);
+    EXPECT_GT(total.kept, 5000);
+}

@@ -95,14 +95,6 @@ namespace ropras::ompl_ext::simd
         return hit;
     }
 
-    inline void capsuleBound(const CapsuleObstacle &o, float &cx, float &cy, float &cz, float &cr) noexcept
-    {
-        cx = o.ax + 0.5f * o.dx;
-        cy = o.ay + 0.5f * o.dy;
-        cz = o.az + 0.5f * o.dz;
-        cr = 0.5f * std::sqrt(o.dx * o.dx + o.dy * o.dy + o.dz * o.dz) + o.radius;
-    }
-
     // ---------------------------------------------------------------- scalar transforms (single path)
 
     /// out = a * b (12-float transforms)
@@ -166,6 +158,64 @@ namespace ropras::ompl_ext::simd
             return d2 <= cr * cr;
         }
     };
+
+    /** \brief World axis-aligned box around an obstacle (centre, half extents), slightly enlarged so that float
+        rounding can never make it cull a contact the exact test finds. */
+    struct ObstacleBox
+    {
+        float cx, cy, cz, ex, ey, ez;
+    };
+
+    inline ObstacleBox inflated(float cx, float cy, float cz, float ex, float ey, float ez) noexcept
+    {
+        const auto grow = [](float e) { return e * (1.0f + 1e-5f) + 1e-5f; };
+        return {cx, cy, cz, grow(ex), grow(ey), grow(ez)};
+    }
+
+    inline ObstacleBox obstacleBox(const SphereObstacle &o) noexcept
+    {
+        return inflated(o.x, o.y, o.z, o.r, o.r, o.r);
+    }
+
+    inline ObstacleBox obstacleBox(const BoxObstacle &o) noexcept
+    {
+        // the box axes are the columns of rot: the world half extent along i is sum_j |R_ij| h_j
+        const float *r = o.rot;
+        return inflated(o.cx, o.cy, o.cz, std::abs(r[0]) * o.hx + std::abs(r[1]) * o.hy + std::abs(r[2]) * o.hz,
+                        std::abs(r[3]) * o.hx + std::abs(r[4]) * o.hy + std::abs(r[5]) * o.hz,
+                        std::abs(r[6]) * o.hx + std::abs(r[7]) * o.hy + std::abs(r[8]) * o.hz);
+    }
+
+    inline ObstacleBox obstacleBox(const CylinderObstacle &o) noexcept
+    {
+        // axis term |a_i| L/2 plus the rim disc's half extent R sqrt(1 - a_i^2)
+        const auto e = [&](float a)
+        { return std::abs(a) * o.halfLength + o.radius * std::sqrt(std::max(0.0f, 1.0f - a * a)); };
+        return inflated(o.cx, o.cy, o.cz, e(o.ax), e(o.ay), e(o.az));
+    }
+
+    inline ObstacleBox obstacleBox(const CapsuleObstacle &o) noexcept
+    {
+        return inflated(o.ax + 0.5f * o.dx, o.ay + 0.5f * o.dy, o.az + 0.5f * o.dz, 0.5f * std::abs(o.dx) + o.radius,
+                        0.5f * std::abs(o.dy) + o.radius, 0.5f * std::abs(o.dz) + o.radius);
+    }
+
+    inline ObstacleBox obstacleBox(const CloudObstacle &o) noexcept
+    {
+        return inflated(o.cx, o.cy, o.cz, o.boundRadius, o.boundRadius, o.boundRadius);
+    }
+
+    /// lanes whose sphere (x, y, z, r) touches the box: the exact sphere-versus-axis-aligned-box test
+    template <class V>
+    inline typename V::Mask sphereTouchesBox(const V &x, const V &y, const V &z, const V &r,
+                                             const ObstacleBox &b) noexcept
+    {
+        const V zero = V::zero();
+        const V dx = max(abs(x - V::broadcast(b.cx)) - V::broadcast(b.ex), zero);
+        const V dy = max(abs(y - V::broadcast(b.cy)) - V::broadcast(b.ey), zero);
+        const V dz = max(abs(z - V::broadcast(b.cz)) - V::broadcast(b.ez), zero);
+        return cmpLe(fma(dx, dx, fma(dy, dy, dz * dz)), r * r);
+    }
 
     template <class V>
     struct Kernels
@@ -280,17 +330,17 @@ namespace ropras::ompl_ext::simd
             placed.all = true;
         }
 
-        /// true when any link's spheres touch the obstacle; candidates come from the link bounding spheres
+        /// true when any link's spheres touch the obstacle; candidates: link bounds touching the obstacle's box
         template <class Exact>
-        static bool obstacleSingle(const KinematicProgram &p, float *buf, Placed &placed, float cx, float cy, float cz,
-                                   float cr, const Exact &exact) noexcept
+        static bool obstacleSingle(const KinematicProgram &p, float *buf, Placed &placed, const ObstacleBox &ob,
+                                   const Exact &exact) noexcept
         {
             const ScratchLayout &l = p.single;
             for (int c = 0; c < p.linkPadded; c += WIDTH)
             {
                 const V bx = V::load(buf + l.lx + c), by = V::load(buf + l.ly + c), bz = V::load(buf + l.lz + c),
                         br = V::load(p.linkRadius.data() + c);
-                unsigned bits = boundTest(bx, by, bz, br, cx, cy, cz, cr).bits();
+                unsigned bits = sphereTouchesBox(bx, by, bz, br, ob).bits();
                 if (bits == 0u)
                     continue;
                 // the exact test on the link bounding spheres: far tighter than sphere-vs-sphere for boards
@@ -327,47 +377,55 @@ namespace ropras::ompl_ext::simd
             return box;
         }
 
+        static bool overlaps(const Aabb &a, const ObstacleBox &b) noexcept
+        {
+            return a.lo[0] <= b.cx + b.ex && a.hi[0] >= b.cx - b.ex && a.lo[1] <= b.cy + b.ey &&
+                   a.hi[1] >= b.cy - b.ey && a.lo[2] <= b.cz + b.ez && a.hi[2] >= b.cz - b.ez;
+        }
+
+        /// the robot box culls the obstacle, then its link bounds and spheres are tested
+        template <class O, class Exact>
+        static bool obstacleSingleCulled(const KinematicProgram &p, float *buf, Placed &placed, const Aabb &box,
+                                         const O &o, const Exact &exact) noexcept
+        {
+            const ObstacleBox ob = obstacleBox(o);
+            return overlaps(box, ob) && obstacleSingle(p, buf, placed, ob, exact);
+        }
+
         static bool envSingle(const KinematicProgram &p, const Environment &env, float *buf, Placed &placed) noexcept
         {
             const Aabb box = aabbSingle(p, buf);
             for (const SphereObstacle &o : env.spheres())
-                if (box.touches(o.x, o.y, o.z, o.r) &&
-                    obstacleSingle(p, buf, placed, o.x, o.y, o.z, o.r,
-                                   [&](const V &x, const V &y, const V &z, const V &r)
-                                   { return hitSphere(x, y, z, r, o).bits(); }))
+                if (obstacleSingleCulled(p, buf, placed, box, o,
+                                         [&](const V &x, const V &y, const V &z, const V &r)
+                                         { return hitSphere(x, y, z, r, o).bits(); }))
                     return true;
             for (const BoxObstacle &o : env.boxes())
-                if (box.touches(o.cx, o.cy, o.cz, o.boundRadius) &&
-                    obstacleSingle(p, buf, placed, o.cx, o.cy, o.cz, o.boundRadius,
-                                   [&](const V &x, const V &y, const V &z, const V &r)
-                                   { return hitBox(x, y, z, r, o).bits(); }))
+                if (obstacleSingleCulled(p, buf, placed, box, o,
+                                         [&](const V &x, const V &y, const V &z, const V &r)
+                                         { return hitBox(x, y, z, r, o).bits(); }))
                     return true;
             for (const CylinderObstacle &o : env.cylinders())
-                if (box.touches(o.cx, o.cy, o.cz, o.boundRadius) &&
-                    obstacleSingle(p, buf, placed, o.cx, o.cy, o.cz, o.boundRadius,
-                                   [&](const V &x, const V &y, const V &z, const V &r)
-                                   { return hitCylinder(x, y, z, r, o).bits(); }))
+                if (obstacleSingleCulled(p, buf, placed, box, o,
+                                         [&](const V &x, const V &y, const V &z, const V &r)
+                                         { return hitCylinder(x, y, z, r, o).bits(); }))
                     return true;
             for (const CapsuleObstacle &o : env.capsules())
-            {
-                float cx, cy, cz, cr;
-                capsuleBound(o, cx, cy, cz, cr);
-                if (box.touches(cx, cy, cz, cr) && obstacleSingle(p, buf, placed, cx, cy, cz, cr,
-                                                                  [&](const V &x, const V &y, const V &z, const V &r)
-                                                                  { return hitCapsule(x, y, z, r, o).bits(); }))
+                if (obstacleSingleCulled(p, buf, placed, box, o,
+                                         [&](const V &x, const V &y, const V &z, const V &r)
+                                         { return hitCapsule(x, y, z, r, o).bits(); }))
                     return true;
-            }
             for (const CloudObstacle &o : env.clouds())
             {
-                if (o.boundRadius < 0.0f || !box.touches(o.cx, o.cy, o.cz, o.boundRadius))
+                if (o.boundRadius < 0.0f)
                     continue;
-                if (obstacleSingle(p, buf, placed, o.cx, o.cy, o.cz, o.boundRadius,
-                                   [&](const V &x, const V &y, const V &z, const V &r)
-                                   {
-                                       const unsigned cand =
-                                           boundTest(x, y, z, r, o.cx, o.cy, o.cz, o.boundRadius).bits();
-                                       return cand != 0u ? hitCloud(x, y, z, r, o, cand) : 0u;
-                                   }))
+                if (obstacleSingleCulled(p, buf, placed, box, o,
+                                         [&](const V &x, const V &y, const V &z, const V &r)
+                                         {
+                                             const unsigned cand =
+                                                 boundTest(x, y, z, r, o.cx, o.cy, o.cz, o.boundRadius).bits();
+                                             return cand != 0u ? hitCloud(x, y, z, r, o, cand) : 0u;
+                                         }))
                     return true;
             }
             return false;
@@ -560,13 +618,13 @@ namespace ropras::ompl_ext::simd
         /// lanes (bits) of \a active that collide with one obstacle, for one link
         template <class Exact>
         static unsigned obstacleBatch(const KinematicProgram &p, float *buf, Placed &placed, int li, unsigned active,
-                                      float cx, float cy, float cz, float cr, const Exact &exact) noexcept
+                                      const ObstacleBox &ob, const Exact &exact) noexcept
         {
             const ScratchLayout &l = p.batch;
             constexpr int W = WIDTH;
             const LinkOp &link = p.links[static_cast<std::size_t>(li)];
-            const unsigned cand = boundTest(V::load(buf + l.lx + W * li), V::load(buf + l.ly + W * li),
-                                            V::load(buf + l.lz + W * li), V::broadcast(link.br), cx, cy, cz, cr)
+            const unsigned cand = sphereTouchesBox(V::load(buf + l.lx + W * li), V::load(buf + l.ly + W * li),
+                                                   V::load(buf + l.lz + W * li), V::broadcast(link.br), ob)
                                       .bits() &
                                   active;
             if (cand == 0u)
@@ -620,6 +678,75 @@ namespace ropras::ompl_ext::simd
             return box;
         }
 
+        /// lanes of \a lanes where some self-collision pair touches
+        static unsigned selfBatch(const KinematicProgram &p, float *buf, Placed &placed, unsigned lanes,
+                                  bool stopOnAny) noexcept
+        {
+            const ScratchLayout &l = p.batch;
+            constexpr int W = WIDTH;
+            unsigned hit = 0u;
+            const float *lx = buf + l.lx, *ly = buf + l.ly, *lz = buf + l.lz;
+            const int nPairs = static_cast<int>(p.selfPairs.size());
+            for (int base = 0; base < nPairs; base += 64)
+            {
+                const int end = std::min(nPairs, base + 64);
+                unsigned cand[64];
+                std::uint64_t any = 0u;
+                // the link bounds of every pair first, without branches
+                for (int k = base; k < end; ++k)
+                {
+                    const auto kk = static_cast<std::size_t>(k);
+                    const int a = p.selfPairOffsetA[kk], b = p.selfPairOffsetB[kk];
+                    const V dx = V::load(lx + a) - V::load(lx + b);
+                    const V dy = V::load(ly + a) - V::load(ly + b);
+                    const V dz = V::load(lz + a) - V::load(lz + b);
+                    const unsigned c =
+                        cmpLe(fma(dx, dx, fma(dy, dy, dz * dz)), V::broadcast(p.selfPairReach2[kk])).bits() & lanes;
+                    cand[k - base] = c;
+                    any |= static_cast<std::uint64_t>(c != 0u) << (k - base);
+                }
+                while (any != 0u)
+                {
+                    const int k = base + __builtin_ctzll(any);
+                    any &= any - 1u;
+                    const auto &pair = p.selfPairs[static_cast<std::size_t>(k)];
+                    unsigned c = cand[k - base] & ~hit;
+                    if (c == 0u)
+                        continue;
+                    const LinkOp &a = p.links[static_cast<std::size_t>(pair.first)];
+                    const LinkOp &b = p.links[static_cast<std::size_t>(pair.second)];
+                    ensureBatch(p, buf, placed, pair.first);
+                    ensureBatch(p, buf, placed, pair.second);
+                    const V bx = V::load(buf + l.lx + W * pair.second), by = V::load(buf + l.ly + W * pair.second),
+                            bz = V::load(buf + l.lz + W * pair.second);
+                    for (int i = a.first; i < a.first + a.count && c != 0u; ++i)
+                    {
+                        const V x = V::load(buf + l.sx + W * i), y = V::load(buf + l.sy + W * i),
+                                z = V::load(buf + l.sz + W * i);
+                        const float ri = p.sr[static_cast<std::size_t>(i)];
+                        // lanes where sphere i reaches b's bounding sphere
+                        const V ex = x - bx, ey = y - by, ez = z - bz;
+                        const float rb = ri + b.br;
+                        unsigned near = cmpLe(fma(ex, ex, fma(ey, ey, ez * ez)), V::broadcast(rb * rb)).bits() & c;
+                        for (int j = b.first; j < b.first + b.count && near != 0u; ++j)
+                        {
+                            const V fx = x - V::load(buf + l.sx + W * j), fy = y - V::load(buf + l.sy + W * j),
+                                    fz = z - V::load(buf + l.sz + W * j);
+                            const float rs = ri + p.sr[static_cast<std::size_t>(j)];
+                            const unsigned h =
+                                cmpLe(fma(fx, fx, fma(fy, fy, fz * fz)), V::broadcast(rs * rs)).bits() & near;
+                            near &= ~h;
+                            c &= ~h;
+                            hit |= h;
+                        }
+                    }
+                    if ((lanes & ~hit) == 0u || (stopOnAny && hit != 0u))
+                        return hit;
+                }
+            }
+            return hit;
+        }
+
         /** \brief Collision lanes of a batch after framesBatch. \a active: lanes to check (bits); stops as soon
             as every active lane collides, or at the first collision when \a stopOnAny. */
         static unsigned collideBatch(const KinematicProgram &p, const Environment &env, float *buf, unsigned active,
@@ -640,11 +767,12 @@ namespace ropras::ompl_ext::simd
             // obstacle-major: the robot box rejects far obstacles once, then every link is tested
             for (const SphereObstacle &o : spheres)
             {
-                if (!box.touches(o.x, o.y, o.z, o.r))
+                const ObstacleBox ob = obstacleBox(o);
+                if (!overlaps(box, ob))
                     continue;
                 for (int li = 0; li < nLinks; ++li)
                 {
-                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, o.x, o.y, o.z, o.r,
+                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, ob,
                                          [&](const V &x, const V &y, const V &z, const V &r, unsigned)
                                          { return hitSphere(x, y, z, r, o).bits(); });
                     if (done())
@@ -653,11 +781,12 @@ namespace ropras::ompl_ext::simd
             }
             for (const BoxObstacle &o : boxes)
             {
-                if (!box.touches(o.cx, o.cy, o.cz, o.boundRadius))
+                const ObstacleBox ob = obstacleBox(o);
+                if (!overlaps(box, ob))
                     continue;
                 for (int li = 0; li < nLinks; ++li)
                 {
-                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, o.cx, o.cy, o.cz, o.boundRadius,
+                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, ob,
                                          [&](const V &x, const V &y, const V &z, const V &r, unsigned)
                                          { return hitBox(x, y, z, r, o).bits(); });
                     if (done())
@@ -666,11 +795,12 @@ namespace ropras::ompl_ext::simd
             }
             for (const CylinderObstacle &o : cylinders)
             {
-                if (!box.touches(o.cx, o.cy, o.cz, o.boundRadius))
+                const ObstacleBox ob = obstacleBox(o);
+                if (!overlaps(box, ob))
                     continue;
                 for (int li = 0; li < nLinks; ++li)
                 {
-                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, o.cx, o.cy, o.cz, o.boundRadius,
+                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, ob,
                                          [&](const V &x, const V &y, const V &z, const V &r, unsigned)
                                          { return hitCylinder(x, y, z, r, o).bits(); });
                     if (done())
@@ -679,13 +809,12 @@ namespace ropras::ompl_ext::simd
             }
             for (const CapsuleObstacle &o : capsules)
             {
-                float cx, cy, cz, cr;
-                capsuleBound(o, cx, cy, cz, cr);
-                if (!box.touches(cx, cy, cz, cr))
+                const ObstacleBox ob = obstacleBox(o);
+                if (!overlaps(box, ob))
                     continue;
                 for (int li = 0; li < nLinks; ++li)
                 {
-                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, cx, cy, cz, cr,
+                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, ob,
                                          [&](const V &x, const V &y, const V &z, const V &r, unsigned)
                                          { return hitCapsule(x, y, z, r, o).bits(); });
                     if (done())
@@ -694,11 +823,14 @@ namespace ropras::ompl_ext::simd
             }
             for (const CloudObstacle &o : clouds)
             {
-                if (o.boundRadius < 0.0f || !box.touches(o.cx, o.cy, o.cz, o.boundRadius))
+                if (o.boundRadius < 0.0f)
+                    continue;
+                const ObstacleBox ob = obstacleBox(o);
+                if (!overlaps(box, ob))
                     continue;
                 for (int li = 0; li < nLinks; ++li)
                 {
-                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, o.cx, o.cy, o.cz, o.boundRadius,
+                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, ob,
                                          [&](const V &x, const V &y, const V &z, const V &r, unsigned cand)
                                          {
                                              const unsigned near =
@@ -709,50 +841,7 @@ namespace ropras::ompl_ext::simd
                         return hit;
                 }
             }
-            const ScratchLayout &l = p.batch;
-            constexpr int W = WIDTH;
-            for (const auto &pair : p.selfPairs)
-            {
-                const LinkOp &a = p.links[static_cast<std::size_t>(pair.first)];
-                const LinkOp &b = p.links[static_cast<std::size_t>(pair.second)];
-                const V bx = V::load(buf + l.lx + W * pair.second), by = V::load(buf + l.ly + W * pair.second),
-                        bz = V::load(buf + l.lz + W * pair.second);
-                const V dx = V::load(buf + l.lx + W * pair.first) - bx;
-                const V dy = V::load(buf + l.ly + W * pair.first) - by;
-                const V dz = V::load(buf + l.lz + W * pair.first) - bz;
-                const V rr = V::broadcast(a.br + b.br);
-                unsigned cand = cmpLe(fma(dx, dx, fma(dy, dy, dz * dz)), rr * rr).bits() & active & ~hit;
-                if (cand == 0u)
-                    continue;
-                ensureBatch(p, buf, placed, pair.first);
-                ensureBatch(p, buf, placed, pair.second);
-                for (int i = a.first; i < a.first + a.count && cand != 0u; ++i)
-                {
-                    const V x = V::load(buf + l.sx + W * i), y = V::load(buf + l.sy + W * i),
-                            z = V::load(buf + l.sz + W * i);
-                    const float ri = p.sr[static_cast<std::size_t>(i)];
-                    // lanes where sphere i reaches b's bounding sphere
-                    const V ex = x - bx, ey = y - by, ez = z - bz;
-                    const float rb = ri + b.br;
-                    unsigned near = cmpLe(fma(ex, ex, fma(ey, ey, ez * ez)), V::broadcast(rb * rb)).bits() & cand;
-                    for (int j = b.first; j < b.first + b.count && near != 0u; ++j)
-                    {
-                        const V fx = x - V::load(buf + l.sx + W * j), fy = y - V::load(buf + l.sy + W * j),
-                                fz = z - V::load(buf + l.sz + W * j);
-                        const float rs = ri + p.sr[static_cast<std::size_t>(j)];
-                        const unsigned h =
-                            cmpLe(fma(fx, fx, fma(fy, fy, fz * fz)), V::broadcast(rs * rs)).bits() & near;
-                        if (h != 0u)
-                        {
-                            hit |= h;
-                            cand &= ~h;
-                            near &= ~h;
-                            if (done())
-                                return hit;
-                        }
-                    }
-                }
-            }
+            hit |= selfBatch(p, buf, placed, active & ~hit, stopOnAny);
             return hit;
         }
     };

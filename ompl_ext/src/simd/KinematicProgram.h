@@ -70,9 +70,12 @@ namespace ropras::ompl_ext::simd
         std::vector<float> linkRadius;
         int linkPadded{0};
         std::vector<std::pair<int, int>> selfPairs;  ///< indices into links
-        std::vector<double> lower, upper;            ///< per variable
-        std::vector<char> unbounded;                 ///< continuous joints: any finite value
-        std::vector<char> rotational;                ///< variable drives a RotateZ frame
+        /// per self pair: float (a.br + b.br)^2 and the batch offsets WIDTH * link of both links
+        std::vector<float> selfPairReach2;
+        std::vector<int> selfPairOffsetA, selfPairOffsetB;
+        std::vector<double> lower, upper;  ///< per variable
+        std::vector<char> unbounded;       ///< continuous joints: any finite value
+        std::vector<char> rotational;      ///< variable drives a RotateZ frame
         ScratchLayout single, batch;
     };
 }  // namespace ropras::ompl_ext::simd
