@@ -9,6 +9,7 @@
 #include <regex>
 #include <sstream>
 
+#include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/CrossCheck.h"
@@ -74,30 +75,6 @@ namespace
         return scenes;
     }
 
-    /// self pairs whose spheres touch at the middle of the joint limits (a hint when the SRDF misses pairs)
-    std::vector<std::string> pairsTouchingAtMiddle(const RobotModel &robot)
-    {
-        std::vector<double> middle;
-        for (const PlanningJoint &joint : robot.joints())
-            middle.push_back(0.5 * (joint.lower + joint.upper));
-        const auto centers = robot.sphereCentersReference(middle.data());
-        const auto &spheres = robot.spheres();
-        const auto &links = robot.collisionLinks();
-        std::vector<std::string> touching;
-        for (const auto &[a, b] : robot.selfCollisionPairs())
-        {
-            const CollisionLink &la = links[std::size_t(a)], &lb = links[std::size_t(b)];
-            bool touch = false;
-            for (int i = la.firstSphere; i < la.firstSphere + la.sphereCount && !touch; ++i)
-                for (int j = lb.firstSphere; j < lb.firstSphere + lb.sphereCount && !touch; ++j)
-                    touch = (centers[std::size_t(i)] - centers[std::size_t(j)]).norm() <=
-                            spheres[std::size_t(i)].radius + spheres[std::size_t(j)].radius;
-            if (touch)
-                touching.push_back(la.name + " / " + lb.name);
-        }
-        return touching;
-    }
-
     std::string backendLabel(SimdBackend backend)
     {
         if (backend != SimdBackend::Best)
@@ -159,19 +136,29 @@ namespace
         for (const std::string &example : report.examples)
             std::cout << "DISAGREEMENT " << example << '\n';
 
-        // a robot that collides with itself nearly everywhere usually has an incomplete SRDF
-        const auto touching = pairsTouchingAtMiddle(*robot);
-        if (!touching.empty())
+        // pairs in contact by design: disabled when in contact everywhere, reported when in contact at the default
+        if (!robot->alwaysCollidingPairs().empty())
         {
-            std::cout << "\nwarning: these self-collision pairs already touch at the middle of the joint limits "
-                         "(add them to the SRDF's disable_collisions if they are in contact by design):\n";
-            for (const std::string &pair : touching)
-                std::cout << "  " << pair << '\n';
+            std::cout << "\nnote: self-collision pairs in contact in every sampled configuration, disabled "
+                         "(MoveIt's \"Always\" rule; RobotModel::Options::disableAlwaysColliding):\n";
+            for (const auto &[a, b] : robot->alwaysCollidingPairs())
+                std::cout << "  " << a << " / " << b << '\n';
+        }
+        if (!robot->defaultCollidingPairs().empty())
+        {
+            std::cout << "\nwarning: self-collision pairs in contact at the default configuration (joints at 0 "
+                         "clamped; kept enabled, add them to the SRDF's disable_collisions if in contact by design):\n";
+            for (const auto &[a, b] : robot->defaultCollidingPairs())
+                std::cout << "  " << a << " / " << b << '\n';
         }
 
         if (!args.meshUrdf.empty())
         {
-            const auto meshRobot = RobotModel::fromUrdfFile(args.meshUrdf, args.srdf, options);
+            // the same self pairs as the sphere model: its "Always" pairs, not ones found on the mesh covers
+            RobotModel::Options meshModelOptions = options;
+            meshModelOptions.disableAlwaysColliding = false;
+            meshModelOptions.disabledPairs = robot->alwaysCollidingPairs();
+            const auto meshRobot = RobotModel::fromUrdfFile(args.meshUrdf, args.srdf, meshModelOptions);
             CrossCheckOptions meshOptions = check;
             meshOptions.samples = args.meshSamples ? args.meshSamples : std::min<std::size_t>(args.samples, 5000);
             const MeshComparison m = compareWithMeshes(robot, meshRobot, scenes, meshOptions);
@@ -212,15 +199,16 @@ namespace
             ->required();
         app.add_option("--samples", a->samples, "random configurations in total")
             ->capture_default_str()
-            ->check(CLI::PositiveNumber);
+            ->check(ropras::bin::POSITIVE_COUNT);
         app.add_option("--mesh-urdf", a->meshUrdf, "the same robot with mesh collision geometry (FCL mesh comparison)")
             ->check(CLI::ExistingFile);
         app.add_option("--mesh-samples", a->meshSamples,
-                       "configurations for the mesh comparison (default min(samples, 5000))");
+                       "configurations for the mesh comparison (default min(samples, 5000))")
+            ->check(ropras::bin::NON_NEGATIVE_COUNT);
         app.add_option("--seed", a->seed, "random seed")->capture_default_str();
         app.add_option("--tolerance", a->tolerance, "contact tolerance (m) within which disagreements are accepted")
             ->capture_default_str()
-            ->check(CLI::NonNegativeNumber);
+            ->check(ropras::bin::NON_NEGATIVE_NUMBER);
         return [a] { return run(*a); };
     }
 

@@ -8,6 +8,7 @@
 #include <map>
 #include <random>
 
+#include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/CollisionChecker.h"
@@ -128,7 +129,14 @@ namespace
                   << " cylinders, " << kinds[CollisionGeometry::Type::Mesh] << " meshes\n";
         std::cout << "        sphere model: " << robot->spheres().size() << " spheres on "
                   << robot->collisionLinks().size() << " links, " << robot->selfCollisionPairs().size()
-                  << " self-collision link pairs\n\n";
+                  << " self-collision link pairs\n";
+        for (const auto &[a, b] : robot->alwaysCollidingPairs())
+            std::cout << "        disabled, in contact in every sampled configuration (\"Always\"): " << a << " / " << b
+                      << '\n';
+        for (const auto &[a, b] : robot->defaultCollidingPairs())
+            std::cout << "        warning: in contact at the default configuration (\"Default\", kept): " << a << " / "
+                      << b << '\n';
+        std::cout << '\n';
 
         std::map<ShapeType, int> shapes;
         std::size_t primitives = 0;
@@ -250,7 +258,7 @@ namespace
             ->check(CLI::ExistingFile);
         app.add_option("--samples", a->samples, "random configurations")
             ->capture_default_str()
-            ->check(CLI::PositiveNumber);
+            ->check(ropras::bin::POSITIVE_COUNT);
         app.add_option("--seed", a->seed, "random seed")->capture_default_str();
         return [a] { return run(*a); };
     }

@@ -15,6 +15,7 @@
 #include <fstream>
 #include <limits>
 #include <locale>
+#include <random>
 #include <set>
 #include <sstream>
 
@@ -124,6 +125,7 @@ namespace ropras::ompl_ext
             compileFrames();
             buildCollisionGeometry(*urdf);
             buildSelfPairs(srdfXml);
+            findAlwaysAndDefaultPairs();
             return model_;
         }
 
@@ -703,6 +705,20 @@ namespace ropras::ompl_ext
                     disabled.insert({std::min(ia, ib), std::max(ia, ib)});
                 }
             }
+            for (const auto &[a, b] : options_.disabledPairs)
+            {
+                int ia = -1, ib = -1;
+                for (std::size_t i = 0; i < links.size(); ++i)
+                {
+                    ia = links[i].name == a ? static_cast<int>(i) : ia;
+                    ib = links[i].name == b ? static_cast<int>(i) : ib;
+                }
+                if (ia < 0 || ib < 0)
+                {
+                    fail("Options::disabledPairs names unknown link '" + (ia < 0 ? a : b) + "'");
+                }
+                disabled.insert({std::min(ia, ib), std::max(ia, ib)});
+            }
             // depth of each link for path finding
             std::vector<int> depth(links.size(), 0);
             for (std::size_t i = 1; i < links.size(); ++i)
@@ -767,6 +783,83 @@ namespace ropras::ompl_ext
             }
         }
 
+        /// true when some sphere of collision link \a a touches (distance <= sum of radii) one of link \a b
+        bool inContact(const std::vector<Eigen::Vector3d> &centers, int a, int b) const
+        {
+            const auto &spheres = model_->spheres_;
+            const CollisionLink &la = model_->collisionLinks_[static_cast<std::size_t>(a)];
+            const CollisionLink &lb = model_->collisionLinks_[static_cast<std::size_t>(b)];
+            for (int i = la.firstSphere; i < la.firstSphere + la.sphereCount; ++i)
+            {
+                for (int j = lb.firstSphere; j < lb.firstSphere + lb.sphereCount; ++j)
+                {
+                    const auto si = static_cast<std::size_t>(i), sj = static_cast<std::size_t>(j);
+                    if ((centers[si] - centers[sj]).norm() <= spheres[si].radius + spheres[sj].radius)
+                    {
+                        return true;
+                    }
+                }
+            }
+            return false;
+        }
+
+        std::pair<std::string, std::string> pairNames(const std::pair<int, int> &p) const
+        {
+            return {model_->collisionLinks_[static_cast<std::size_t>(p.first)].name,
+                    model_->collisionLinks_[static_cast<std::size_t>(p.second)].name};
+        }
+
+        // MoveIt Setup Assistant's "Always" rule (disable pairs in contact in every sampled configuration) and
+        // "Default" rule (report, but keep, pairs in contact at the default configuration). Samples are uniform
+        // within the limits from a fixed-seed mt19937_64 with a portable [0, 1) mapping, so the result is the same
+        // on every platform. A pair leaves the candidates at its first contact-free sample; sampling stops early
+        // when none is left, which does not change the result.
+        void findAlwaysAndDefaultPairs()
+        {
+            std::vector<std::pair<int, int>> &pairs = model_->selfPairs_;
+            if (options_.disableAlwaysColliding)
+            {
+                if (options_.alwaysCollidingSamples == 0)
+                {
+                    fail("Options::alwaysCollidingSamples must be > 0 when disableAlwaysColliding is on");
+                }
+                std::vector<std::pair<int, int>> always = pairs;
+                std::mt19937_64 rng(options_.alwaysCollidingSeed);
+                std::vector<double> q(model_->joints_.size());
+                for (std::size_t k = 0; k < options_.alwaysCollidingSamples && !always.empty(); ++k)
+                {
+                    for (std::size_t i = 0; i < q.size(); ++i)
+                    {
+                        const PlanningJoint &j = model_->joints_[i];
+                        const double u = static_cast<double>(rng() >> 11) * 0x1.0p-53;
+                        q[i] = std::min(j.upper, j.lower + u * (j.upper - j.lower));
+                    }
+                    const std::vector<Eigen::Vector3d> centers = model_->sphereCentersReference(q.data());
+                    always.erase(std::remove_if(always.begin(), always.end(),
+                                                [&](const std::pair<int, int> &p)
+                                                { return !inContact(centers, p.first, p.second); }),
+                                 always.end());
+                }
+                for (const std::pair<int, int> &p : always)
+                {
+                    model_->alwaysPairs_.push_back(pairNames(p));
+                }
+                pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
+                                           [&](const std::pair<int, int> &p)
+                                           { return std::find(always.begin(), always.end(), p) != always.end(); }),
+                            pairs.end());
+            }
+            const std::vector<double> q = model_->defaultConfiguration();
+            const std::vector<Eigen::Vector3d> centers = model_->sphereCentersReference(q.data());
+            for (const std::pair<int, int> &p : pairs)
+            {
+                if (inContact(centers, p.first, p.second))
+                {
+                    model_->defaultPairs_.push_back(pairNames(p));
+                }
+            }
+        }
+
         std::shared_ptr<RobotModel> model_;
         std::string urdfName_, srdfName_;
         const RobotModel::Options &options_;
@@ -797,6 +890,25 @@ namespace ropras::ompl_ext
         return builder.build(urdfXml, srdfXml);
     }
 
+    std::vector<double> RobotModel::planningValues(const std::map<std::string, double> &jointValues,
+                                                   const std::string &context) const
+    {
+        for (const auto &entry : jointValues)
+            if (std::none_of(urdfJoints_.begin(), urdfJoints_.end(),
+                             [&](const UrdfJoint &j) { return j.name == entry.first; }))
+                throw Error(context + ": names joint '" + entry.first + "', which robot '" + name_ + "' (" + source_ +
+                            ") does not have");
+        std::vector<double> q(joints_.size());
+        for (std::size_t i = 0; i < joints_.size(); ++i)
+        {
+            auto it = jointValues.find(joints_[i].name);
+            if (it == jointValues.end())
+                throw Error(context + ": does not give planning joint '" + joints_[i].name + "'");
+            q[i] = it->second;
+        }
+        return q;
+    }
+
     int RobotModel::jointIndex(const std::string &name) const
     {
         for (std::size_t i = 0; i < joints_.size(); ++i)
@@ -825,6 +937,17 @@ namespace ropras::ompl_ext
             }
         }
         throw Error("robot '" + name_ + "' (" + source_ + "): no link '" + name + "'");
+    }
+
+    std::vector<double> RobotModel::defaultConfiguration() const
+    {
+        std::vector<double> q;
+        q.reserve(joints_.size());
+        for (const PlanningJoint &j : joints_)
+        {
+            q.push_back(std::clamp(0.0, j.lower, j.upper));
+        }
+        return q;
     }
 
     bool RobotModel::withinBounds(const double *q) const noexcept

@@ -68,22 +68,6 @@ namespace
         return margin;
     }
 
-    /// "" when the robot's own sphere model is collision-free at q = 0 (clamped into the limits)
-    std::string selfCollidingAtZero(const RobotModel &robot)
-    {
-        std::vector<double> q(robot.dof());
-        for (std::size_t j = 0; j < robot.dof(); ++j)
-            q[j] = std::clamp(0.0, robot.joints()[j].lower, robot.joints()[j].upper);
-        const double m = referenceMargin(robot, Environment(), q.data());
-        return m > 0.0 ? "" : robot.name() + " self-collides at q = 0 (margin " + std::to_string(m) + " m)";
-    }
-
-#define REQUIRE_SELF_FREE_AT_ZERO(robot)                                                                         \
-    if (const std::string why = selfCollidingAtZero(robot); !why.empty())                                        \
-    {                                                                                                            \
-        GTEST_SKIP() << why << ": its self-collision pairs make every configuration invalid (RobotModel issue)"; \
-    }
-
     Eigen::Isometry3d pose(const Eigen::Vector3d &t, const Eigen::Quaterniond &q = Eigen::Quaterniond::Identity())
     {
         Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
@@ -284,7 +268,6 @@ TEST(CollisionCheckerTest, Ur5VerdictsMatchBruteForceInClutter)
 {
     REQUIRE_SHARED();
     const auto robot = loadRobot("ur5");
-    REQUIRE_SELF_FREE_AT_ZERO(*robot);
     const VerdictStats s = checkVerdicts(robot, clutter(211), 3000, 311);
     EXPECT_GT(s.valid, 300);
     EXPECT_GT(s.invalid, 300);
@@ -297,7 +280,6 @@ TEST(CollisionCheckerTest, SelfCollisionInEmptyWorldMatchesBruteForce)
     for (const char *name : {"panda", "ur5"})
     {
         const auto robot = loadRobot(name);
-        REQUIRE_SELF_FREE_AT_ZERO(*robot);
         const VerdictStats s = checkVerdicts(robot, Environment(), 3000, 400);
         EXPECT_GT(s.invalid, 30) << name << ": random configurations must include self-collisions";
         EXPECT_GT(s.valid, 1000) << name;
@@ -414,7 +396,6 @@ TEST(CollisionCheckerTest, Ur5MotionsMatchDenseReferenceSampling)
 {
     REQUIRE_SHARED();
     const auto robot = loadRobot("ur5");
-    REQUIRE_SELF_FREE_AT_ZERO(*robot);
     const MotionStats s = checkMotions(robot, clutter(610), 150, 0.8, 1.0 / 32.0, 611);
     EXPECT_GT(s.valid, 10);
     EXPECT_GT(s.invalid, 10);

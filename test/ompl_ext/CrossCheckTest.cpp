@@ -9,7 +9,6 @@
 #include <iostream>
 #include <limits>
 #include <random>
-#include <sstream>
 
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/CollisionChecker.h"
@@ -57,60 +56,24 @@ namespace
             std::cout << "[ info ]   disagreement: " << e << '\n';
     }
 
-    std::string readText(const fs::path &path)
-    {
-        std::ifstream in(path);
-        std::stringstream s;
-        s << in.rdbuf();
-        return s.str();
-    }
-
-    /** \brief The shared SRDF plus the self pairs whose spheres already touch at the middle of the joint
-        limits (MoveIt Setup Assistant's "Default" rule: pairs in collision at the default pose). The shared UR5 SRDF
-       does not know the force-torque sensor link, whose spheres overlap wrist_2_link's in every configuration, so
-       without this every UR5 configuration is in self-collision. Computed from the reference centres (plain double
-       arithmetic). */
-    std::string srdfWithDefaultPairs(const fs::path &urdf, const fs::path &srdf, std::vector<std::string> *added)
-    {
-        const auto model = RobotModel::fromUrdfFile(urdf.string(), srdf.string());
-        std::vector<double> middle;
-        for (const PlanningJoint &joint : model->joints())
-            middle.push_back(0.5 * (joint.lower + joint.upper));
-        const auto centers = model->sphereCentersReference(middle.data());
-        const auto &spheres = model->spheres();
-        const auto &links = model->collisionLinks();
-        std::string extra;
-        for (const auto &[a, b] : model->selfCollisionPairs())
-        {
-            bool touch = false;
-            const CollisionLink &la = links[std::size_t(a)], &lb = links[std::size_t(b)];
-            for (int i = la.firstSphere; i < la.firstSphere + la.sphereCount; ++i)
-                for (int j = lb.firstSphere; j < lb.firstSphere + lb.sphereCount; ++j)
-                    touch = touch || (centers[std::size_t(i)] - centers[std::size_t(j)]).norm() <=
-                                         spheres[std::size_t(i)].radius + spheres[std::size_t(j)].radius;
-            if (touch)
-            {
-                extra +=
-                    "<disable_collisions link1=\"" + la.name + "\" link2=\"" + lb.name + "\" reason=\"Default\"/>\n";
-                if (added)
-                    added->push_back(la.name + " - " + lb.name);
-            }
-        }
-        std::string text = readText(srdf);
-        const std::size_t end = text.rfind("</robot>");
-        return end == std::string::npos ? text : text.insert(end, extra);
-    }
-
-    /// a shared robot (\a urdfFile in robots/<robot>/) with srdfWithDefaultPairs() of its spherized model
+    /** \brief A shared robot (\a urdfFile in robots/<robot>/) with its SRDF. Self pairs in contact in every
+        configuration (the UR5's force-torque sensor inside wrist_2_link, which the shared SRDF does not know) are
+        disabled by RobotModel itself (MoveIt's "Always" rule, on by default). A mesh model disables exactly the
+        spherized model's pairs, so that both check the same self pairs. */
     std::shared_ptr<const RobotModel> loadShared(const std::string &robot, const std::string &urdfFile)
     {
         const fs::path dir = SHARED / "robots" / robot;
-        std::vector<std::string> added;
-        const std::string srdf =
-            srdfWithDefaultPairs(dir / (robot + "_spherized.urdf"), dir / (robot + ".srdf"), &added);
-        for (const std::string &pair : added)
-            std::cout << "[ info ] " << robot << ": self pair touching at the default pose disabled: " << pair << '\n';
-        return RobotModel::fromUrdfString(readText(dir / urdfFile), dir.string(), (dir / urdfFile).string(), srdf);
+        const std::string srdf = (dir / (robot + ".srdf")).string();
+        const auto spheres = RobotModel::fromUrdfFile((dir / (robot + "_spherized.urdf")).string(), srdf);
+        for (const auto &[a, b] : spheres->alwaysCollidingPairs())
+            std::cout << "[ info ] " << robot << ": self pair in contact in every configuration disabled: " << a
+                      << " - " << b << '\n';
+        if (urdfFile == robot + "_spherized.urdf")
+            return spheres;
+        RobotModel::Options options;
+        options.disableAlwaysColliding = false;
+        options.disabledPairs = spheres->alwaysCollidingPairs();
+        return RobotModel::fromUrdfFile((dir / urdfFile).string(), srdf, options);
     }
 
     void crossCheckRobot(const std::string &robot, std::size_t samples, std::uint64_t seed)

@@ -2,6 +2,8 @@
 #define ROPRAS_OMPL_EXT_ROBOT_MODEL_H
 
 #include <Eigen/Geometry>
+#include <cstddef>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -124,6 +126,16 @@ namespace ropras::ompl_ext
         std::map<std::string, double> heldJointValues;              ///< values of movable joints not planned
         Eigen::Isometry3d basePose{Eigen::Isometry3d::Identity()};  ///< root link pose in the world
         SpherizerOptions spherizer;
+        /** \brief MoveIt Setup Assistant's "Always" rule: drop the self-collision pairs whose spheres are in
+            contact in EVERY one of \a alwaysCollidingSamples configurations drawn uniformly within the joint
+            limits (seed \a alwaysCollidingSeed; reference centres in double). Such pairs are in contact by
+            design (e.g. a sensor flange modelled inside the wrist); left enabled they make every configuration
+            invalid. The dropped pairs are listed by RobotModel::alwaysCollidingPairs(). */
+        bool disableAlwaysColliding{true};
+        std::size_t alwaysCollidingSamples{1000};  ///< must be > 0 when disableAlwaysColliding is on
+        std::uint64_t alwaysCollidingSeed{20240601};
+        /// more pairs to disable, by link name, exactly as if listed in the SRDF's disable_collisions
+        std::vector<std::pair<std::string, std::string>> disabledPairs;
     };
 
     /** \brief Immutable robot description for collision checking, loaded from URDF (+ SRDF) at run time.
@@ -132,7 +144,8 @@ namespace ropras::ompl_ext
         subset (the others are held at given values, default 0 clamped into their limits). Collision
         geometry: `<sphere>` elements are taken as they are; boxes, cylinders and meshes are covered by
         the Spherizer. Self-collision pairs are all pairs of collision links that can move relative to each
-        other, minus SRDF `disable_collisions`, minus links adjacent through one joint.
+        other, minus SRDF `disable_collisions` (and Options::disabledPairs), minus links adjacent through one joint,
+        minus (by default) pairs in contact in every sampled configuration (alwaysCollidingPairs()).
 
         Every error (unreadable or malformed file, unsupported joint, unknown name, missing mesh, bad radius)
         throws ropras::Error naming the file and the problem. */
@@ -162,6 +175,13 @@ namespace ropras::ompl_ext
         const std::vector<CollisionGeometry> &collisionGeometries() const { return geometries_; }
         /// pairs of collisionLinks() indices (first < second) checked for self-collision
         const std::vector<std::pair<int, int>> &selfCollisionPairs() const { return selfPairs_; }
+        /// link-name pairs removed by Options::disableAlwaysColliding (in contact in every sampled configuration)
+        const std::vector<std::pair<std::string, std::string>> &alwaysCollidingPairs() const { return alwaysPairs_; }
+        /** \brief Link-name pairs of selfCollisionPairs() in contact at defaultConfiguration() (MoveIt's "Default"
+            rule). Reported only, never disabled: a hint that the SRDF may miss pairs in contact by design. */
+        const std::vector<std::pair<std::string, std::string>> &defaultCollidingPairs() const { return defaultPairs_; }
+        /// every planning joint at 0 clamped into its limits (what defaultCollidingPairs() is computed at)
+        std::vector<double> defaultConfiguration() const;
         const Eigen::Isometry3d &basePose() const { return basePose_; }
 
         /// planning-variable index of a joint; throws Error listing the planning joints if unknown
@@ -170,6 +190,12 @@ namespace ropras::ompl_ext
         int linkIndex(const std::string &name) const;
         /// true when every value is finite and within its joint's limits (continuous joints: any finite)
         bool withinBounds(const double *q) const noexcept;
+        /** \brief The planning-joint values (dof(), in planning order) from a name -> value map such as a MoveIt
+            request's start state or goal. Joints of the URDF that are not planned are ignored (they stay held);
+            a name the URDF does not have, or a planning joint the map does not give, throws Error naming
+            \a context (e.g. "request0001.yaml: goal"). */
+        std::vector<double> planningValues(const std::map<std::string, double> &jointValues,
+                                           const std::string &context) const;
 
         // Reference computations in double precision. They walk the URDF joints (origin, axis-angle),
         // independently of the compiled frames, and allocate: for tests and tools, not hot paths.
@@ -197,6 +223,7 @@ namespace ropras::ompl_ext
         std::vector<CollisionSphere> spheres_;
         std::vector<CollisionGeometry> geometries_;
         std::vector<std::pair<int, int>> selfPairs_;
+        std::vector<std::pair<std::string, std::string>> alwaysPairs_, defaultPairs_;
     };
 }  // namespace ropras::ompl_ext
 
