@@ -18,13 +18,24 @@ int main(int argc, char **argv)
         auto body = command.setup(*sub);
         sub->callback([&run, body] { run = body; });
     }
+    // CLI11 reports an unknown command only as "A subcommand is required": name it and list the commands
+    if (argc > 1 && argv[1][0] != '-' &&
+        std::none_of(registry.begin(), registry.end(), [&](const auto &c) { return c.name == argv[1]; }))
+    {
+        std::cerr << "ropras: error: unknown command '" << argv[1] << "'; commands:";
+        for (const auto &command : registry)
+            std::cerr << ' ' << command.name;
+        std::cerr << '\n';
+        return 2;
+    }
     try
     {
         app.parse(argc, argv);
     }
     catch (const CLI::ParseError &e)
     {
-        return app.exit(e);
+        // --help exits 0; every command-line error (unknown option, missing file, bad number) exits 2
+        return app.exit(e) == 0 ? 0 : 2;
     }
     try
     {
@@ -32,6 +43,12 @@ int main(int argc, char **argv)
     }
     catch (const ropras::Error &e)
     {
+        std::cerr << "ropras: error: " << e.what() << '\n';
+        return 2;
+    }
+    catch (const std::exception &e)
+    {
+        // a library error type that escaped the ropras::Error translation: still a clear message, never an abort
         std::cerr << "ropras: error: " << e.what() << '\n';
         return 2;
     }

@@ -12,6 +12,7 @@
 #include <optional>
 #include <random>
 
+#include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/CollisionChecker.h"
@@ -338,18 +339,22 @@ namespace
         app.add_option("--json", args->json, "write the medians as JSON");
         app.add_option("--repeat", args->repeat, "repetitions (medians are reported)")
             ->capture_default_str()
-            ->check(CLI::PositiveNumber);
+            ->check(ropras::bin::POSITIVE_COUNT);
         app.add_option("--configs", args->configs, "random configurations per scene")
             ->capture_default_str()
-            ->check(CLI::PositiveNumber);
-        app.add_option("--edges", args->edges, "valid and invalid edges per scene (each)")->capture_default_str();
+            ->check(ropras::bin::POSITIVE_COUNT);
+        app.add_option("--edges", args->edges, "valid and invalid edges per scene (each)")
+            ->capture_default_str()
+            ->check(ropras::bin::NON_NEGATIVE_COUNT);
         app.add_option("--fcl-configs", args->fclConfigs, "configurations per scene for FCL with spheres")
-            ->capture_default_str();
+            ->capture_default_str()
+            ->check(ropras::bin::NON_NEGATIVE_COUNT);
         app.add_option("--mesh-configs", args->meshConfigs, "configurations per scene for FCL with meshes")
-            ->capture_default_str();
+            ->capture_default_str()
+            ->check(ropras::bin::NON_NEGATIVE_COUNT);
         app.add_option("--resolution", args->resolution, "motion-check joint step (rad)")
             ->capture_default_str()
-            ->check(CLI::PositiveNumber);
+            ->check(ropras::bin::POSITIVE_NUMBER);
         app.add_option("--backend", args->backend, "best, scalar or avx2")->capture_default_str();
         app.add_option("--clock", args->clock, "wall (steady clock) or cpu (thread CPU time: use on a loaded machine)")
             ->capture_default_str();

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/FclReferenceChecker.h"
@@ -148,7 +149,10 @@ namespace
             for (const auto &entry : fs::directory_iterator(dir))
             {
                 const std::string name = entry.path().filename().string();
-                if (name.rfind("scene", 0) == 0 && entry.path().extension() == ".yaml")
+                const std::string number = entry.path().stem().string().substr(std::min<std::size_t>(5, name.size()));
+                // MotionBenchMaker names: sceneNNNN.yaml beside requestNNNN.yaml; other files are ignored
+                if (name.rfind("scene", 0) == 0 && entry.path().extension() == ".yaml" && !number.empty() &&
+                    number.size() < 9 && number.find_first_not_of("0123456789") == std::string::npos)
                     scenes.push_back(entry.path());
             }
             std::sort(scenes.begin(), scenes.end());
@@ -170,24 +174,11 @@ namespace
         return problems;
     }
 
-    std::map<std::string, std::string> parseParams(const std::vector<std::string> &list)
-    {
-        std::map<std::string, std::string> out;
-        for (const std::string &kv : list)
-        {
-            const auto eq = kv.find('=');
-            if (eq == std::string::npos || eq == 0)
-                throw Error("--param expects key=value, got '" + kv + "'");
-            out[kv.substr(0, eq)] = kv.substr(eq + 1);
-        }
-        return out;
-    }
-
     int run(const Args &a)
     {
         ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
         ompl::RNG::setSeed(a.seed);
-        const auto params = parseParams(a.params);
+        const auto params = ropras::bin::keyValueOptions(a.params, "--param");
         auto robot = RobotModel::fromUrdfFile(a.urdf, a.srdf);
         std::shared_ptr<const RobotModel> meshRobot;
         if (!a.meshUrdf.empty())
@@ -253,14 +244,14 @@ namespace
                 }
                 si->setup();
                 ob::ScopedState<> start(ss.getStateSpace()), goal(ss.getStateSpace());
+                const std::string request =
+                    problem.category + "/request" + std::to_string(10000 + problem.index).substr(1) + ".yaml";
+                const std::vector<double> q0 = robot->planningValues(problem.request.start, request + ": start state");
+                const std::vector<double> q1 = robot->planningValues(problem.request.goal, request + ": goal");
                 for (std::size_t k = 0; k < robot->dof(); ++k)
                 {
-                    const std::string &joint = robot->joints()[k].name;
-                    if (!problem.request.start.count(joint) || !problem.request.goal.count(joint))
-                        throw Error(problem.category + " request " + std::to_string(problem.index) +
-                                    " does not give joint '" + joint + "'");
-                    start[k] = problem.request.start.at(joint);
-                    goal[k] = problem.request.goal.at(joint);
+                    start[k] = q0[k];
+                    goal[k] = q1[k];
                 }
                 ss.setStartAndGoalStates(start, goal);
                 for (const std::string &plannerName : a.planners)
@@ -426,10 +417,17 @@ namespace
         app.add_option("--param", a->params, "planner parameter key=value, for every planner (repeatable)");
         app.add_option("--checkers", a->checkers, "subset of ropras,fcl_sphere,fcl_mesh")->delimiter(',');
         app.add_option("--categories", a->categories, "only these categories")->delimiter(',');
-        app.add_option("--limit", a->limit, "at most N problems per category (0: all)");
-        app.add_option("--repeat", a->repeat, "runs per problem")->capture_default_str()->check(CLI::PositiveNumber);
-        app.add_option("--time", a->time, "time limit per plan (s)")->capture_default_str()->check(CLI::PositiveNumber);
-        app.add_option("--resolution", a->resolution, "motion-check joint step (rad)")->capture_default_str();
+        app.add_option("--limit", a->limit, "at most N problems per category (0: all)")
+            ->check(ropras::bin::NON_NEGATIVE_COUNT);
+        app.add_option("--repeat", a->repeat, "runs per problem")
+            ->capture_default_str()
+            ->check(ropras::bin::POSITIVE_COUNT);
+        app.add_option("--time", a->time, "time limit per plan (s)")
+            ->capture_default_str()
+            ->check(ropras::bin::POSITIVE_NUMBER);
+        app.add_option("--resolution", a->resolution, "motion-check joint step (rad)")
+            ->capture_default_str()
+            ->check(ropras::bin::POSITIVE_NUMBER);
         app.add_option("--seed", a->seed, "OMPL random seed")->capture_default_str();
         app.add_flag("!--no-simplify", a->simplify, "skip path simplification");
         app.add_option("--json", a->json, "write the results as JSON");

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
 #include "ropras/pomdp/ModelRegistry.h"
@@ -115,9 +116,16 @@ namespace
         app.add_option("--json", options->json, "Write the results as JSON to this file");
         app.add_option("--model", options->model, "Registered model to benchmark")->capture_default_str();
         app.add_option("--solvers", options->solvers, "Solvers to benchmark")->capture_default_str();
-        app.add_option("--simulations", options->simulations, "Simulations per planning call")->capture_default_str();
-        app.add_option("--repeats", options->repeats, "Planning calls per solver")->capture_default_str();
-        app.add_option("--depth", options->depth, "Search depth D")->capture_default_str();
+        // CLI11 reads "-1" into an unsigned option as 2^64 - 1: counts are range-checked as numbers first
+        app.add_option("--simulations", options->simulations, "Simulations per planning call")
+            ->capture_default_str()
+            ->check(ropras::bin::POSITIVE_COUNT);
+        app.add_option("--repeats", options->repeats, "Planning calls per solver")
+            ->capture_default_str()
+            ->check(ropras::bin::POSITIVE_COUNT);
+        app.add_option("--depth", options->depth, "Search depth D")
+            ->capture_default_str()
+            ->check(ropras::bin::POSITIVE_COUNT);
         app.add_option("--seed", options->seed, "Seed of the first planning call")->capture_default_str();
         app.add_option("--param", options->params, "Extra solver parameter name=value (repeatable)");
         return [options] { return run(*options); };

@@ -2,11 +2,13 @@
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 
+#include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/PlannerRegistry.h"
@@ -28,33 +30,6 @@ namespace
         unsigned seed{1};
     };
 
-    std::map<std::string, std::string> parseParams(const std::vector<std::string> &list)
-    {
-        std::map<std::string, std::string> out;
-        for (const std::string &kv : list)
-        {
-            const auto eq = kv.find('=');
-            if (eq == std::string::npos || eq == 0)
-                throw Error("--param expects key=value, got '" + kv + "'");
-            out[kv.substr(0, eq)] = kv.substr(eq + 1);
-        }
-        return out;
-    }
-
-    /// planning-joint values from a request's map; every planning joint must be named
-    void fillState(const RobotModel &robot, const std::map<std::string, double> &values, const std::string &what,
-                   const std::string &file, ompl::base::State *state)
-    {
-        auto *q = state->as<ompl::base::RealVectorStateSpace::StateType>()->values;
-        for (std::size_t i = 0; i < robot.dof(); ++i)
-        {
-            auto it = values.find(robot.joints()[i].name);
-            if (it == values.end())
-                throw Error(file + ": the " + what + " does not give planning joint '" + robot.joints()[i].name + "'");
-            q[i] = it->second;
-        }
-    }
-
     double pathLength(const ompl::geometric::PathGeometric &path)
     {
         return path.length();
@@ -68,15 +43,15 @@ namespace
         const MotionPlanRequest request = loadMotionPlanRequest(a.request);
         PlanningContextOptions options;
         options.planner = a.planner;
-        options.plannerParams = parseParams(a.params);
+        options.plannerParams = ropras::bin::keyValueOptions(a.params, "--param");
         options.resolution = a.resolution;
         PlanningContext context = makePlanningContext(a.urdf, a.srdf, environment, RobotModel::Options(), options);
         const RobotModel &robot = *context.robot;
         auto &ss = *context.setup;
 
         ompl::base::ScopedState<> start(ss.getStateSpace()), goal(ss.getStateSpace());
-        fillState(robot, request.start, "start state", a.request, start.get());
-        fillState(robot, request.goal, "goal", a.request, goal.get());
+        context.setState(start.get(), request.start, a.request + ": start state");
+        context.setState(goal.get(), request.goal, a.request + ": goal");
         if (!context.validityChecker->isValid(start.get()))
             throw Error(a.request + ": the start state is invalid (in collision or outside the joint limits)");
         if (!context.validityChecker->isValid(goal.get()))
@@ -141,8 +116,10 @@ namespace
         app.add_option("--param", args->params, "planner parameter key=value (repeatable)");
         app.add_option("--time", args->time, "planning time limit (s)")
             ->capture_default_str()
-            ->check(CLI::PositiveNumber);
-        app.add_option("--resolution", args->resolution, "motion-check joint step (rad)")->capture_default_str();
+            ->check(ropras::bin::POSITIVE_NUMBER);
+        app.add_option("--resolution", args->resolution, "motion-check joint step (rad)")
+            ->capture_default_str()
+            ->check(ropras::bin::POSITIVE_NUMBER);
         app.add_flag("--simplify", args->simplify, "simplify the path (OMPL's simplifySolution)");
         app.add_option("--out", args->out, "write the joint-space path as CSV");
         app.add_option("--seed", args->seed, "OMPL random seed")->capture_default_str();

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
 #include "ropras/pomdp/ModelRegistry.h"
@@ -135,14 +136,23 @@ namespace
         auto o = std::make_shared<RunOptions>();
         app.add_option("--model", o->model, "Registered POMDP model")->capture_default_str();
         app.add_option("--solver", o->solver, "ropras3, refbasic, pomcp, rpomcp, bplan or rbss")->capture_default_str();
-        app.add_option("--episodes", o->episodes, "Number of episodes")->capture_default_str();
-        app.add_option("--steps", o->steps, "Maximum primitive steps per episode")->capture_default_str();
+        // CLI11 reads "-1" into an unsigned option as 2^64 - 1: counts are range-checked as numbers first
+        app.add_option("--episodes", o->episodes, "Number of episodes")
+            ->capture_default_str()
+            ->check(ropras::bin::POSITIVE_COUNT);
+        app.add_option("--steps", o->steps, "Maximum primitive steps per episode")
+            ->capture_default_str()
+            ->check(ropras::bin::POSITIVE_COUNT);
         app.add_option("--simulations", o->simulations, "Simulations per planning call (0 = no limit)")
-            ->capture_default_str();
-        app.add_option("--seconds", o->seconds, "Seconds per planning call (0 = no limit)")->capture_default_str();
+            ->capture_default_str()
+            ->check(ropras::bin::NON_NEGATIVE_COUNT);
+        app.add_option("--seconds", o->seconds, "Seconds per planning call (0 = no limit)")
+            ->capture_default_str()
+            ->check(ropras::bin::NON_NEGATIVE_NUMBER);
         app.add_option("--planning-particles", o->planningParticles,
                        "Particles handed to the solver per plan (0 = the filter's)")
-            ->capture_default_str();
+            ->capture_default_str()
+            ->check(ropras::bin::NON_NEGATIVE_COUNT);
         app.add_option("--seed", o->seed, "Seed of the first episode")->capture_default_str();
         app.add_option("--param", o->params, "Solver / filter / model parameter name=value (repeatable)");
         app.add_option("--json", o->json, "Write the summary and per-episode results as JSON");
