@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "ropras/ompl_ext/HaltonSequence.h"
+
 namespace ropras::ompl_ext
 {
     class CollisionChecker;
@@ -40,8 +42,8 @@ namespace ropras::ompl_ext
 
         void setRange(double range) { range_ = range; }
         double getRange() const { return range_; }
-        void setHalton(bool on) { halton_ = on; }
-        bool getHalton() const { return halton_; }
+        void setHalton(bool on) { useHalton_ = on; }
+        bool getHalton() const { return useHalton_; }
         void setBalance(bool on) { balance_ = on; }
         bool getBalance() const { return balance_; }
         void setDynamicDomain(bool on) { dynamicDomain_ = on; }
@@ -54,6 +56,12 @@ namespace ropras::ompl_ext
         double getDynamicDomainMinRadius() const { return ddMinRadius_; }
         void setMaxSamples(unsigned n) { maxSamples_ = n; }
         unsigned getMaxSamples() const { return maxSamples_; }
+        /** \brief Seed of the Halton shift (parameter "seed"): 0 (default) draws the shift from OMPL's RNG at
+            the first setup(); any other value derives it from \a seed alone (SplitMix64), so two planner
+            instances with the same seed and an iteration bound (max_samples) return the same paths.
+            Takes effect at the next setup(). Uniform sampling (halton = 0) always uses OMPL's RNG. */
+        void setSeed(unsigned seed);
+        unsigned getSeed() const { return seed_; }
 
     private:
         struct Tree
@@ -76,7 +84,7 @@ namespace ropras::ompl_ext
         Tree trees_[2];  ///< 0: rooted at start states, 1: rooted at goal states
         std::size_t dof_{0};
         std::vector<double> lower_, upper_, scratch_, shift_;
-        std::uint64_t haltonIndex_{0};
+        HaltonSequence halton_;
         ompl::base::StateSamplerPtr sampler_;
         ompl::base::State *sampleState_{nullptr};
         const CollisionChecker *checker_{nullptr};
@@ -84,13 +92,14 @@ namespace ropras::ompl_ext
         double resolution_{1.0 / 32.0};
 
         double range_{1.0};
-        bool halton_{true};
+        bool useHalton_{true};
         bool balance_{true};
         bool dynamicDomain_{true};
         double ddRadius_{4.0};
         double ddAlpha_{1.0e-4};
         double ddMinRadius_{1.0};
         unsigned maxSamples_{0};  ///< 0: unlimited (until the termination condition)
+        unsigned seed_{0};        ///< 0: Halton shift from OMPL's RNG
     };
 }  // namespace ropras::ompl_ext
 

@@ -1,0 +1,226 @@
+#ifndef ROPRAS_POMDP_OMPL_REFERENCE_POLICY_H
+#define ROPRAS_POMDP_OMPL_REFERENCE_POLICY_H
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ropras/core/Error.h"
+#include "ropras/pomdp/OmplPathPlanner.h"
+#include "ropras/pomdp/ReferencePolicy.h"
+#include "ropras/pomdp/SamplingHeuristic.h"
+
+namespace ropras::pomdp
+{
+    /** \brief What a model provides so that an OMPL planner can produce its macro-actions: the robot
+        configuration inside a state, the configuration of a target, optionally the obstacles a particle
+        believes in, and PathToMacroAction.
+
+        All functions are called once per reference plan (not per simulated step), must not throw and must
+        not keep references to their arguments. */
+    template <class State, class Action, class Target>
+    class OmplPlanningAdapter
+    {
+    public:
+        virtual ~OmplPlanningAdapter() = default;
+
+        /** \brief Required: writes the robot's planning-joint values (RobotModel::dof() of them, planning-
+            joint order) in \a state to \a q. */
+        virtual void configuration(const State &state, double *q) const = 0;
+
+        /** \brief Required: the configuration to plan to for \a target (from the sampling heuristic), seen
+            from the particle \a start; false when the target has no configuration (a counted failure). */
+        virtual bool targetConfiguration(const State &start, const Target &target, double *q) const = 0;
+
+        /** \brief Required, PathToMacroAction: converts the planned joint-space path into primitive actions
+            appended to \a out. \a waypoints is row-major, \a count x dof, first = configuration(start),
+            last = the target configuration, every straight segment collision-free (at the planner's
+            motion-check resolution) in the particle's environment. The model discretizes it (typically with
+            discretizeJointPath: points at most one primitive step apart) and may truncate the macro to a
+            maximum length (a partial path toward the target is a valid macro). Returns false, or appends
+            nothing, when it cannot convert (a counted failure). */
+        virtual bool pathToMacroAction(const State &start, const double *waypoints, std::size_t count,
+                                       std::vector<Action> &out) const = 0;
+
+        /** \brief Optional, obstacles carried by the particle, first form: a whole Environment for
+            \a particle (e.g. one of a few scene hypotheses the model keeps), installed in O(1). Return null
+            (the default) to use the second form. */
+        virtual std::shared_ptr<const ompl_ext::Environment> environment(const State &particle) const
+        {
+            (void)particle;
+            return nullptr;
+        }
+
+        /** \brief Optional, second form: move the objects whose poses \a particle carries in \a working (the
+            policy's private copy of its base Environment, Environment::setObjectPose, O(moved primitives))
+            and return true; return false (the default) when the particle carries no obstacle poses, then
+            the base Environment is used unchanged. */
+        virtual bool poseObstacles(const State &particle, ompl_ext::Environment &working) const
+        {
+            (void)particle;
+            (void)working;
+            return false;
+        }
+    };
+
+    /** \brief Discretizes a piecewise-linear joint-space path into primitive steps: each straight segment of
+        \a waypoints (\a count x \a dof, row-major) is split into ceil(length / \a step) equal pieces, and the
+        end of every piece is appended to \a points (row-major, \a dof values each). So consecutive points
+        are at most \a step apart (Euclidean), every waypoint is a point (a straight move between consecutive
+        points never cuts a corner of the path: it lies on a segment the planner validated), and the last
+        point is the final waypoint. At most \a maxPoints are appended (0 = no limit): a truncated path ends
+        short of the target, on the path. The start is not appended; zero-length segments add nothing.
+        Returns the number appended; a non-positive or non-finite \a step or a non-finite waypoint appends
+        nothing more. */
+    inline std::size_t discretizeJointPath(const double *waypoints, std::size_t count, std::size_t dof, double step,
+                                           std::size_t maxPoints, std::vector<double> &points)
+    {
+        if (!(step > 0.0) || !std::isfinite(step) || count < 2 || dof == 0)
+            return 0;
+        std::size_t added = 0;
+        for (std::size_t s = 0; s + 1 < count; ++s)
+        {
+            const double *a = waypoints + s * dof;
+            const double *b = a + dof;
+            double length = 0.0;
+            for (std::size_t k = 0; k < dof; ++k)
+                length += (b[k] - a[k]) * (b[k] - a[k]);
+            length = std::sqrt(length);
+            if (!std::isfinite(length))
+                return added;
+            const auto pieces = static_cast<std::size_t>(std::ceil(length / step - 1e-9));
+            for (std::size_t i = 1; i <= pieces; ++i)
+            {
+                if (maxPoints != 0 && added >= maxPoints)
+                    return added;
+                const double u = static_cast<double>(i) / static_cast<double>(pieces);
+                for (std::size_t k = 0; k < dof; ++k)
+                    points.push_back(i == pieces ? b[k] : a[k] + u * (b[k] - a[k]));
+                ++added;
+            }
+        }
+        return added;
+    }
+
+    /** \brief The OMPL-backed reference policy (Algorithm 1, SampleMacroActionSBMP): for a particle
+        \a start, target <- SamplingHeuristic(b) (Uniform / Dynamic / epsilon-greedy), a joint-space plan
+        from configuration(start) to targetConfiguration(target) with ANY OMPL planner by name under a
+        per-plan time limit (OmplPathPlanner: one SimpleSetup, cleared between plans), in the obstacles of
+        that particle (OmplPlanningAdapter::environment / poseObstacles), converted by the model's
+        pathToMacroAction. Every failure (no target, invalid start or target, no path in time, planner
+        exception, failed conversion) returns false and is counted; sample() never throws. ROP-RAS3,
+        R-POMCP, B-plan and RBSS use it unchanged (ModelComponents::referencePolicy). */
+    template <class M, class Target>
+    class OmplReferencePolicy final : public ReferencePolicy<M>
+    {
+    public:
+        using typename ReferencePolicy<M>::State;
+        using typename ReferencePolicy<M>::Action;
+        using Adapter = OmplPlanningAdapter<State, Action, Target>;
+
+        /** \brief Statistics beyond the planner's: targets the heuristic could not produce, targets without
+            a configuration, failed conversions, and the time in sample(). */
+        struct Statistics
+        {
+            std::size_t requested{0};         ///< sample() calls
+            std::size_t succeeded{0};         ///< macros returned
+            std::size_t noTarget{0};          ///< the heuristic or targetConfiguration() failed
+            std::size_t conversionFailed{0};  ///< pathToMacroAction() failed or produced nothing
+            double seconds{0.0};              ///< wall-clock time in sample()
+            std::size_t failed() const { return requested - succeeded; }
+        };
+
+        /** \brief Throws ropras::Error for missing parts, an unknown planner name or parameter, or bad
+            settings (see OmplPathPlanner). */
+        OmplReferencePolicy(std::shared_ptr<const Adapter> adapter,
+                            std::unique_ptr<SamplingHeuristic<State, Target>> heuristic,
+                            std::shared_ptr<const ompl_ext::RobotModel> robot,
+                            std::shared_ptr<const ompl_ext::Environment> environment,
+                            const OmplPathPlannerSettings &settings = OmplPathPlannerSettings())
+            : adapter_(std::move(adapter)), heuristic_(std::move(heuristic))
+        {
+            if (!adapter_ || !heuristic_)
+                throw Error("OmplReferencePolicy: missing adapter or sampling heuristic");
+            if (!environment)
+                throw Error("OmplReferencePolicy: null Environment");
+            base_ = environment;
+            working_ = std::make_shared<ompl_ext::Environment>(*environment);
+            planner_ = std::make_unique<OmplPathPlanner>(std::move(robot), std::move(environment), settings);
+            start_.resize(planner_->dof());
+            target_.resize(planner_->dof());
+        }
+
+        bool sample(const State &start, BeliefView<State> belief, Rng &rng, std::vector<Action> &out) override
+        {
+            const auto begin = std::chrono::steady_clock::now();
+            const bool ok = sampleImpl(start, belief, rng, out);
+            statistics_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+            return ok;
+        }
+
+        std::string name() const override { return heuristic_->name() + "+ompl(" + planner_->settings().planner + ")"; }
+
+        const Statistics &statistics() const { return statistics_; }
+        const PathPlannerStatistics &plannerStatistics() const { return planner_->statistics(); }
+        const OmplPathPlanner &planner() const { return *planner_; }
+        /// the status of the last plan (Solved also when the failure was in the heuristic or conversion)
+        PathPlanStatus lastStatus() const { return lastStatus_; }
+
+    private:
+        bool sampleImpl(const State &start, BeliefView<State> belief, Rng &rng, std::vector<Action> &out) noexcept
+        {
+            ++statistics_.requested;
+            lastStatus_ = PathPlanStatus::Solved;
+            try
+            {
+                if (!heuristic_->sample(start, belief, rng, targetValue_) ||
+                    !adapter_->targetConfiguration(start, targetValue_, target_.data()))
+                {
+                    ++statistics_.noTarget;
+                    return false;
+                }
+                if (auto own = adapter_->environment(start))
+                    planner_->setEnvironment(std::move(own));
+                else if (adapter_->poseObstacles(start, *working_))
+                    planner_->setEnvironment(working_);
+                else
+                    planner_->setEnvironment(base_);
+                adapter_->configuration(start, start_.data());
+                lastStatus_ = planner_->plan(start_.data(), target_.data());
+                if (lastStatus_ != PathPlanStatus::Solved)
+                    return false;
+                const std::size_t before = out.size();
+                if (!adapter_->pathToMacroAction(start, planner_->path().data(), planner_->waypointCount(), out) ||
+                    out.size() == before)
+                {
+                    out.resize(before);
+                    ++statistics_.conversionFailed;
+                    return false;
+                }
+                ++statistics_.succeeded;
+                return true;
+            }
+            catch (...)
+            {
+                ++statistics_.conversionFailed;
+                return false;
+            }
+        }
+
+        std::shared_ptr<const Adapter> adapter_;
+        std::unique_ptr<SamplingHeuristic<State, Target>> heuristic_;
+        std::shared_ptr<const ompl_ext::Environment> base_;
+        std::shared_ptr<ompl_ext::Environment> working_;
+        std::unique_ptr<OmplPathPlanner> planner_;
+        std::vector<double> start_, target_;
+        Target targetValue_{};
+        Statistics statistics_;
+        PathPlanStatus lastStatus_{PathPlanStatus::Solved};
+    };
+}  // namespace ropras::pomdp
+
+#endif
