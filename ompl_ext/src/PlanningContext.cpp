@@ -8,11 +8,60 @@
 
 namespace ropras::ompl_ext
 {
+    namespace
+    {
+        /** The identity projection for spaces of one or two joints. OMPL 1.5.2's own
+            RealVectorIdentityProjectionEvaluator, registered by default for such spaces, trips an Eigen assertion in
+            Debian's build (it resizes a fixed-size Eigen::Ref), aborting KPIECE1, LBKPIECE1, BKPIECE1, ProjEST, SBL,
+            PDST and STRIDE; this one writes the coordinates in place. */
+        class JointIdentityProjection : public ompl::base::ProjectionEvaluator
+        {
+        public:
+            explicit JointIdentityProjection(const ompl::base::RealVectorStateSpace *space)
+                : ompl::base::ProjectionEvaluator(space), dimension_(space->getDimension())
+            {
+            }
+            unsigned int getDimension() const override { return dimension_; }
+            void defaultCellSizes() override
+            {
+                const auto &bounds = space_->as<ompl::base::RealVectorStateSpace>()->getBounds();
+                cellSizes_.resize(dimension_);
+                for (unsigned int i = 0; i < dimension_; ++i)
+                    cellSizes_[i] = (bounds.high[i] - bounds.low[i]) / 20.0;
+                bounds_ = bounds;
+            }
+            void project(const ompl::base::State *state, Eigen::Ref<Eigen::VectorXd> projection) const override
+            {
+                const double *values = state->as<ompl::base::RealVectorStateSpace::StateType>()->values;
+                for (unsigned int i = 0; i < dimension_; ++i)
+                    projection[i] = values[i];
+            }
+
+        private:
+            unsigned int dimension_;
+        };
+
+        /// RealVectorStateSpace whose default projection for one or two joints is JointIdentityProjection
+        /// (StateSpace::setup() re-registers the default projections, so it has to happen here).
+        class JointStateSpace : public ompl::base::RealVectorStateSpace
+        {
+        public:
+            using ompl::base::RealVectorStateSpace::RealVectorStateSpace;
+            void registerProjections() override
+            {
+                if (getDimension() <= 2)
+                    registerDefaultProjection(std::make_shared<JointIdentityProjection>(this));
+                else
+                    ompl::base::RealVectorStateSpace::registerProjections();
+            }
+        };
+    }  // namespace
+
     std::shared_ptr<ompl::base::RealVectorStateSpace> createStateSpace(const RobotModel &robot)
     {
         if (robot.dof() == 0)
             throw Error("robot '" + robot.name() + "' (" + robot.source() + ") has no planning joints");
-        auto space = std::make_shared<ompl::base::RealVectorStateSpace>(robot.dof());
+        auto space = std::make_shared<JointStateSpace>(robot.dof());
         ompl::base::RealVectorBounds bounds(robot.dof());
         for (std::size_t i = 0; i < robot.dof(); ++i)
         {
@@ -32,20 +81,11 @@ namespace ropras::ompl_ext
         motionValidator->setEnvironment(std::move(environment));
     }
 
-    void PlanningContext::setState(ompl::base::State *state, const std::map<std::string, double> &jointValues) const
+    void PlanningContext::setState(ompl::base::State *state, const std::map<std::string, double> &jointValues,
+                                   const std::string &context) const
     {
-        auto *values = state->as<ompl::base::RealVectorStateSpace::StateType>()->values;
-        std::vector<bool> seen(robot->dof(), false);
-        for (const auto &[name, value] : jointValues)
-        {
-            const int index = robot->jointIndex(name);
-            values[index] = value;
-            seen[index] = true;
-        }
-        for (std::size_t i = 0; i < robot->dof(); ++i)
-            if (!seen[i])
-                throw Error("joint values for robot '" + robot->name() + "' do not name planning joint '" +
-                            robot->joints()[i].name + "'");
+        const std::vector<double> q = robot->planningValues(jointValues, context);
+        std::copy(q.begin(), q.end(), state->as<ompl::base::RealVectorStateSpace::StateType>()->values);
     }
 
     PlanningContext makePlanningContext(std::shared_ptr<const RobotModel> robot,

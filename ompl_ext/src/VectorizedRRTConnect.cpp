@@ -10,6 +10,7 @@
 
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/CollisionChecker.h"
+#include "ropras/ompl_ext/HaltonSequence.h"
 #include "ropras/ompl_ext/MotionValidator.h"
 #include "ropras/ompl_ext/PlannerRegistry.h"
 
@@ -18,22 +19,6 @@ namespace ropras::ompl_ext
     namespace
     {
         constexpr double INF = std::numeric_limits<double>::infinity();
-        constexpr unsigned PRIMES[] = {2,  3,  5,  7,  11, 13, 17, 19, 23, 29,  31,  37,  41,  43,  47,  53,
-                                       59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103, 107, 109, 113, 127, 131};
-
-        double radicalInverse(std::uint64_t index, unsigned base)
-        {
-            const double inv = 1.0 / base;
-            double f = inv, value = 0.0;
-            while (index > 0)
-            {
-                value += f * static_cast<double>(index % base);
-                index /= base;
-                f *= inv;
-            }
-            return value;
-        }
-
         const double *values(const ompl::base::State *state)
         {
             return state->as<ompl::base::RealVectorStateSpace::StateType>()->values;
@@ -61,6 +46,14 @@ namespace ropras::ompl_ext
                                       &VectorizedRRTConnect::getDynamicDomainMinRadius, "0.:0.1:10.");
         Planner::declareParam<unsigned>("max_samples", this, &VectorizedRRTConnect::setMaxSamples,
                                         &VectorizedRRTConnect::getMaxSamples, "0:1:1000000");
+        Planner::declareParam<unsigned>("seed", this, &VectorizedRRTConnect::setSeed, &VectorizedRRTConnect::getSeed,
+                                        "0:1:1000000");
+    }
+
+    void VectorizedRRTConnect::setSeed(unsigned seed)
+    {
+        seed_ = seed;
+        shift_.clear();  // recomputed at the next setup()
     }
 
     VectorizedRRTConnect::~VectorizedRRTConnect()
@@ -82,6 +75,8 @@ namespace ropras::ompl_ext
         lower_ = space->getBounds().low;
         upper_ = space->getBounds().high;
         scratch_.assign(3 * dof_, 0.0);
+        if (dof_ <= HaltonSequence::MAX_DIMENSIONS)
+            halton_.reset(dof_);
         if (!sampler_)
         {
             sampler_ = si_->allocStateSampler();
@@ -89,11 +84,25 @@ namespace ropras::ompl_ext
         }
         if (shift_.size() != dof_)
         {
-            // Cranley-Patterson rotation of the Halton sequence, from OMPL's seeded RNG.
-            ompl::RNG rng;
+            // Cranley-Patterson rotation of the Halton sequence, from OMPL's seeded RNG or from seed_.
             shift_.resize(dof_);
-            for (double &s : shift_)
-                s = rng.uniform01();
+            if (seed_ == 0)
+            {
+                ompl::RNG rng;
+                for (double &s : shift_)
+                    s = rng.uniform01();
+            }
+            else
+            {
+                std::uint64_t x = seed_;
+                for (double &s : shift_)
+                {
+                    std::uint64_t z = (x += 0x9e3779b97f4a7c15ULL);
+                    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+                    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+                    s = static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+                }
+            }
         }
     }
 
@@ -106,7 +115,7 @@ namespace ropras::ompl_ext
             tree.parent.clear();
             tree.radius.clear();
         }
-        haltonIndex_ = 0;
+        // The Halton sequence continues across queries (a retry after clear() draws new samples).
     }
 
     bool VectorizedRRTConnect::motionValid(const double *a, const double *b) const
@@ -154,12 +163,12 @@ namespace ropras::ompl_ext
 
     void VectorizedRRTConnect::sample(double *out)
     {
-        if (halton_ && dof_ <= sizeof(PRIMES) / sizeof(PRIMES[0]))
+        if (useHalton_ && dof_ <= HaltonSequence::MAX_DIMENSIONS)
         {
-            ++haltonIndex_;
+            halton_.next(out);
             for (std::size_t k = 0; k < dof_; ++k)
             {
-                double u = radicalInverse(haltonIndex_, PRIMES[k]) + shift_[k];
+                double u = out[k] + shift_[k];
                 u -= std::floor(u);
                 out[k] = lower_[k] + u * (upper_[k] - lower_[k]);
             }

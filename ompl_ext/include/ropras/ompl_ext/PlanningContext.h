@@ -40,8 +40,10 @@ namespace ropras::ompl_ext
         const ompl::base::SpaceInformationPtr &spaceInformation() const { return setup->getSpaceInformation(); }
         /// replaces the obstacles seen by both validators (O(1)); call between queries
         void setEnvironment(std::shared_ptr<const Environment> environment);
-        /// fills an OMPL state from joint values given by name (every planning joint must be named)
-        void setState(ompl::base::State *state, const std::map<std::string, double> &jointValues) const;
+        /// fills an OMPL state from joint values given by name (RobotModel::planningValues: every planning joint
+        /// must be named, other URDF joints are ignored, unknown names throw Error naming \a context)
+        void setState(ompl::base::State *state, const std::map<std::string, double> &jointValues,
+                      const std::string &context = "joint values") const;
     };
 
     PlanningContext makePlanningContext(std::shared_ptr<const RobotModel> robot,

@@ -1,0 +1,85 @@
+#include "ropras/ompl_ext/HaltonSequence.h"
+
+#include <cmath>
+
+#include "ropras/core/Error.h"
+
+namespace ropras::ompl_ext
+{
+    namespace
+    {
+        constexpr unsigned PRIMES[HaltonSequence::MAX_DIMENSIONS] = {2,  3,  5,  7,   11,  13,  17,  19,  23,  29, 31,
+                                                                     37, 41, 43, 47,  53,  59,  61,  67,  71,  73, 79,
+                                                                     83, 89, 97, 101, 103, 107, 109, 113, 127, 131};
+        constexpr std::size_t MAX_DIGITS = 64;  // enough for any 64-bit index in base >= 2
+    }                                           // namespace
+
+    unsigned HaltonSequence::base(std::size_t dimension)
+    {
+        if (dimension >= MAX_DIMENSIONS)
+            throw Error("HaltonSequence: dimension " + std::to_string(dimension) + " exceeds the maximum of " +
+                        std::to_string(MAX_DIMENSIONS));
+        return PRIMES[dimension];
+    }
+
+    double HaltonSequence::radicalInverse(std::uint64_t index, unsigned base)
+    {
+        const double inv = 1.0 / base;
+        double f = inv, value = 0.0;
+        while (index > 0)
+        {
+            value += f * static_cast<double>(index % base);
+            index /= base;
+            f *= inv;
+        }
+        return value;
+    }
+
+    void HaltonSequence::reset(std::size_t dimensions)
+    {
+        if (dimensions > MAX_DIMENSIONS)
+            throw Error("HaltonSequence: " + std::to_string(dimensions) + " dimensions exceed the maximum of " +
+                        std::to_string(MAX_DIMENSIONS));
+        counters_.resize(dimensions);
+        for (std::size_t k = 0; k < dimensions; ++k)
+        {
+            Counter &c = counters_[k];
+            c.base = PRIMES[k];
+            c.digits.assign(MAX_DIGITS, 0);
+            c.powers.resize(MAX_DIGITS);
+            double p = 1.0 / c.base;
+            for (double &power : c.powers)
+            {
+                power = p;
+                p /= c.base;
+            }
+            c.value = 0.0;
+        }
+        index_ = 0;
+    }
+
+    void HaltonSequence::next(double *out) noexcept
+    {
+        ++index_;
+        for (std::size_t k = 0; k < counters_.size(); ++k)
+        {
+            Counter &c = counters_[k];
+            std::size_t j = 0;
+            // Carry: digits equal to base-1 roll over to 0, each removing (base-1) * base^-(j+1).
+            while (c.digits[j] == c.base - 1)
+            {
+                c.digits[j] = 0;
+                c.value -= (c.base - 1) * c.powers[j];
+                ++j;
+            }
+            ++c.digits[j];
+            c.value += c.powers[j];
+            // Guard against drift from the running sum (never leaves [0, 1)).
+            if (c.value < 0.0)
+                c.value = 0.0;
+            else if (c.value >= 1.0)
+                c.value = std::nextafter(1.0, 0.0);
+            out[k] = c.value;
+        }
+    }
+}  // namespace ropras::ompl_ext
