@@ -73,6 +73,31 @@ namespace ropras::ompl_ext::simd
         return cmpLe(fma(ex, ex, fma(ey, ey, ez * ez)), rr * rr);
     }
 
+    /// the exact test for any primitive obstacle type (overloads of the functions above), for loops over all types
+    template <class V>
+    inline typename V::Mask hitObstacle(const V &x, const V &y, const V &z, const V &r,
+                                        const SphereObstacle &o) noexcept
+    {
+        return hitSphere(x, y, z, r, o);
+    }
+    template <class V>
+    inline typename V::Mask hitObstacle(const V &x, const V &y, const V &z, const V &r, const BoxObstacle &o) noexcept
+    {
+        return hitBox(x, y, z, r, o);
+    }
+    template <class V>
+    inline typename V::Mask hitObstacle(const V &x, const V &y, const V &z, const V &r,
+                                        const CylinderObstacle &o) noexcept
+    {
+        return hitCylinder(x, y, z, r, o);
+    }
+    template <class V>
+    inline typename V::Mask hitObstacle(const V &x, const V &y, const V &z, const V &r,
+                                        const CapsuleObstacle &o) noexcept
+    {
+        return hitCapsule(x, y, z, r, o);
+    }
+
     /// lanes in \a candidates (bit set) whose sphere touches the cloud
     template <class V>
     inline unsigned hitCloud(const V &x, const V &y, const V &z, const V &r, const CloudObstacle &o,
@@ -146,17 +171,6 @@ namespace ropras::ompl_ext::simd
     struct Aabb
     {
         float lo[3], hi[3];
-        bool touches(float cx, float cy, float cz, float cr) const noexcept
-        {
-            const float c[3] = {cx, cy, cz};
-            float d2 = 0.0f;
-            for (int i = 0; i < 3; ++i)
-            {
-                const float d = std::max(std::max(lo[i] - c[i], c[i] - hi[i]), 0.0f);
-                d2 += d * d;
-            }
-            return d2 <= cr * cr;
-        }
     };
 
     /** \brief World axis-aligned box around an obstacle (centre, half extents), slightly enlarged so that float
@@ -395,26 +409,17 @@ namespace ropras::ompl_ext::simd
         static bool envSingle(const KinematicProgram &p, const Environment &env, float *buf, Placed &placed) noexcept
         {
             const Aabb box = aabbSingle(p, buf);
-            for (const SphereObstacle &o : env.spheres())
-                if (obstacleSingleCulled(p, buf, placed, box, o,
-                                         [&](const V &x, const V &y, const V &z, const V &r)
-                                         { return hitSphere(x, y, z, r, o).bits(); }))
-                    return true;
-            for (const BoxObstacle &o : env.boxes())
-                if (obstacleSingleCulled(p, buf, placed, box, o,
-                                         [&](const V &x, const V &y, const V &z, const V &r)
-                                         { return hitBox(x, y, z, r, o).bits(); }))
-                    return true;
-            for (const CylinderObstacle &o : env.cylinders())
-                if (obstacleSingleCulled(p, buf, placed, box, o,
-                                         [&](const V &x, const V &y, const V &z, const V &r)
-                                         { return hitCylinder(x, y, z, r, o).bits(); }))
-                    return true;
-            for (const CapsuleObstacle &o : env.capsules())
-                if (obstacleSingleCulled(p, buf, placed, box, o,
-                                         [&](const V &x, const V &y, const V &z, const V &r)
-                                         { return hitCapsule(x, y, z, r, o).bits(); }))
-                    return true;
+            const auto anyHit = [&](const auto &obstacles)
+            {
+                for (const auto &o : obstacles)
+                    if (obstacleSingleCulled(p, buf, placed, box, o,
+                                             [&](const V &x, const V &y, const V &z, const V &r)
+                                             { return hitObstacle(x, y, z, r, o).bits(); }))
+                        return true;
+                return false;
+            };
+            if (anyHit(env.spheres()) || anyHit(env.boxes()) || anyHit(env.cylinders()) || anyHit(env.capsules()))
+                return true;
             for (const CloudObstacle &o : env.clouds())
             {
                 if (o.boundRadius < 0.0f)
@@ -758,70 +763,30 @@ namespace ropras::ompl_ext::simd
             unsigned hit = 0u;
             const auto done = [&] { return stopOnAny ? hit != 0u : (active & ~hit) == 0u; };
             const Aabb box = aabbBatch(p, buf, active);
-            const auto &spheres = env.spheres();
-            const auto &boxes = env.boxes();
-            const auto &cylinders = env.cylinders();
-            const auto &capsules = env.capsules();
-            const auto &clouds = env.clouds();
             const int nLinks = static_cast<int>(p.links.size());
-            // obstacle-major: the robot box rejects far obstacles once, then every link is tested
-            for (const SphereObstacle &o : spheres)
+            // obstacle-major: the robot box rejects far obstacles once, then every link is tested;
+            // returns true when the batch is decided (done())
+            const auto sweep = [&](const auto &obstacles)
             {
-                const ObstacleBox ob = obstacleBox(o);
-                if (!overlaps(box, ob))
-                    continue;
-                for (int li = 0; li < nLinks; ++li)
+                for (const auto &o : obstacles)
                 {
-                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, ob,
-                                         [&](const V &x, const V &y, const V &z, const V &r, unsigned)
-                                         { return hitSphere(x, y, z, r, o).bits(); });
-                    if (done())
-                        return hit;
+                    const ObstacleBox ob = obstacleBox(o);
+                    if (!overlaps(box, ob))
+                        continue;
+                    for (int li = 0; li < nLinks; ++li)
+                    {
+                        hit |= obstacleBatch(p, buf, placed, li, active & ~hit, ob,
+                                             [&](const V &x, const V &y, const V &z, const V &r, unsigned)
+                                             { return hitObstacle(x, y, z, r, o).bits(); });
+                        if (done())
+                            return true;
+                    }
                 }
-            }
-            for (const BoxObstacle &o : boxes)
-            {
-                const ObstacleBox ob = obstacleBox(o);
-                if (!overlaps(box, ob))
-                    continue;
-                for (int li = 0; li < nLinks; ++li)
-                {
-                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, ob,
-                                         [&](const V &x, const V &y, const V &z, const V &r, unsigned)
-                                         { return hitBox(x, y, z, r, o).bits(); });
-                    if (done())
-                        return hit;
-                }
-            }
-            for (const CylinderObstacle &o : cylinders)
-            {
-                const ObstacleBox ob = obstacleBox(o);
-                if (!overlaps(box, ob))
-                    continue;
-                for (int li = 0; li < nLinks; ++li)
-                {
-                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, ob,
-                                         [&](const V &x, const V &y, const V &z, const V &r, unsigned)
-                                         { return hitCylinder(x, y, z, r, o).bits(); });
-                    if (done())
-                        return hit;
-                }
-            }
-            for (const CapsuleObstacle &o : capsules)
-            {
-                const ObstacleBox ob = obstacleBox(o);
-                if (!overlaps(box, ob))
-                    continue;
-                for (int li = 0; li < nLinks; ++li)
-                {
-                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, ob,
-                                         [&](const V &x, const V &y, const V &z, const V &r, unsigned)
-                                         { return hitCapsule(x, y, z, r, o).bits(); });
-                    if (done())
-                        return hit;
-                }
-            }
-            for (const CloudObstacle &o : clouds)
+                return false;
+            };
+            if (sweep(env.spheres()) || sweep(env.boxes()) || sweep(env.cylinders()) || sweep(env.capsules()))
+                return hit;
+            for (const CloudObstacle &o : env.clouds())
             {
                 if (o.boundRadius < 0.0f)
                     continue;
