@@ -15,6 +15,7 @@
 #include "ropras/pomdp/ParameterMap.h"
 #include "ropras/pomdp/ParticleArena.h"
 #include "ropras/pomdp/ReferencePolicy.h"
+#include "ropras/pomdp/SearchTree.h"
 #include "ropras/pomdp/Solver.h"
 
 namespace ropras::pomdp
@@ -314,18 +315,7 @@ namespace ropras::pomdp
                 return rollout(s, depth, rng);
             }
             const MacroView<Action> macro{macroPool_.data() + actions_[a].macroOffset, actions_[a].macroLength};
-            MacroStepResult<State, typename M::Observation> step;
-            if (settings_.profile)
-            {
-                const auto t0 = detail::Clock::now();
-                step = executeMacro(*model_, s, macro, rng);
-                stats_.modelSeconds += detail::secondsSince(t0);
-            }
-            else
-            {
-                step = executeMacro(*model_, s, macro, rng);
-            }
-            stats_.modelSteps += step.steps;
+            const auto step = detail::executeMacroCounted(*model_, s, macro, rng, settings_.profile, stats_);
             double r = step.reward;
             if (!step.terminal)
             {
@@ -345,17 +335,7 @@ namespace ropras::pomdp
 
         std::uint32_t childFor(std::uint32_t a, std::uint64_t key)
         {
-            for (std::uint32_t c = actions_[a].firstChild; c != NONE; c = beliefs_[c].nextSibling)
-            {
-                if (beliefs_[c].key == key)
-                {
-                    return c;
-                }
-            }
-            const std::uint32_t c = newBeliefNode(key);
-            beliefs_[c].nextSibling = actions_[a].firstChild;
-            actions_[a].firstChild = c;
-            return c;
+            return detail::observationChild(beliefs_, actions_[a].firstChild, key);
         }
 
         std::shared_ptr<const M> model_;
