@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "ExpectError.h"
+
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -47,22 +49,7 @@ f 3 4 8 7
 f 4 1 5 8
 )";
 
-    void expectErrorMentions(const std::function<void()> &f, const std::vector<std::string> &needles)
-    {
-        try
-        {
-            f();
-            ADD_FAILURE() << "no ropras::Error thrown (expected one mentioning " << needles.front() << ")";
-        }
-        catch (const Error &e)
-        {
-            for (const std::string &n : needles)
-            {
-                EXPECT_NE(std::string(e.what()).find(n), std::string::npos)
-                    << "message '" << e.what() << "' does not mention '" << n << "'";
-            }
-        }
-    }
+    using ropras::test::expectErrorMentions;
 }  // namespace
 
 TEST(MeshLoader, ObjQuadsTriangulatedAndScaled)

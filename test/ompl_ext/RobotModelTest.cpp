@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "ExpectError.h"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -133,22 +135,7 @@ namespace
 )";
     }
 
-    void expectErrorMentions(const std::function<void()> &f, const std::vector<std::string> &needles)
-    {
-        try
-        {
-            f();
-            ADD_FAILURE() << "no ropras::Error thrown (expected one mentioning " << needles.front() << ")";
-        }
-        catch (const Error &e)
-        {
-            for (const std::string &n : needles)
-            {
-                EXPECT_NE(std::string(e.what()).find(n), std::string::npos)
-                    << "message '" << e.what() << "' does not mention '" << n << "'";
-            }
-        }
-    }
+    using ropras::test::expectErrorMentions;
 }  // namespace
 
 TEST(RobotModel, PandaSpherizedJointsLimitsSpheres)

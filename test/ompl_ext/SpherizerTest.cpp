@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "ExpectError.h"
+
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -178,22 +180,7 @@ namespace
         EXPECT_LE(worst, 1e-12) << what << ": a surface point lies " << worst << " m outside every sphere";
     }
 
-    void expectErrorMentions(const std::function<void()> &f, const std::vector<std::string> &needles)
-    {
-        try
-        {
-            f();
-            ADD_FAILURE() << "no ropras::Error thrown (expected one mentioning " << needles.front() << ")";
-        }
-        catch (const Error &e)
-        {
-            for (const std::string &n : needles)
-            {
-                EXPECT_NE(std::string(e.what()).find(n), std::string::npos)
-                    << "message '" << e.what() << "' does not mention '" << n << "'";
-            }
-        }
-    }
+    using ropras::test::expectErrorMentions;
 }  // namespace
 
 TEST(Spherizer, BoxCoverIsConservativeAndTight)
