@@ -115,7 +115,7 @@ namespace
         std::string category;
         int index{0};
         std::shared_ptr<const Environment> env;
-        MotionPlanRequest request;
+        std::vector<double> start, goal;  ///< planning-joint values from the request
     };
 
     double quantile(std::vector<double> v, double q)
@@ -129,7 +129,7 @@ namespace
         return v[lo] + (pos - lo) * (v[hi] - v[lo]);
     }
 
-    std::vector<Problem> loadProblems(const Args &a)
+    std::vector<Problem> loadProblems(const Args &a, const RobotModel &robot)
     {
         std::vector<Problem> problems;
         if (!fs::is_directory(a.problems))
@@ -165,7 +165,9 @@ namespace
                 p.index = std::stoi(scene.stem().string().substr(5));
                 const fs::path request = dir / ("request" + scene.stem().string().substr(5) + ".yaml");
                 p.env = std::make_shared<const Environment>(loadPlanningScene(scene.string()));
-                p.request = loadMotionPlanRequest(request.string());
+                const MotionPlanRequest r = loadMotionPlanRequest(request.string());
+                p.start = robot.planningValues(r.start, request.string() + ": start state");
+                p.goal = robot.planningValues(r.goal, request.string() + ": goal");
                 problems.push_back(std::move(p));
             }
         }
@@ -201,7 +203,7 @@ namespace
             throw Error("--mesh-urdf " + a.meshUrdf + " has " + std::to_string(meshRobot->dof()) +
                         " planning joints, --urdf has " + std::to_string(robot->dof()));
 
-        const std::vector<Problem> problems = loadProblems(a);
+        const std::vector<Problem> problems = loadProblems(a, *robot);
         auto checker = std::make_shared<const CollisionChecker>(robot);
         auto fclSphere = std::make_shared<FclSphereChecker>(robot);
         std::shared_ptr<FclMeshChecker> fclMesh = meshRobot ? std::make_shared<FclMeshChecker>(meshRobot) : nullptr;
@@ -244,14 +246,10 @@ namespace
                 }
                 si->setup();
                 ob::ScopedState<> start(ss.getStateSpace()), goal(ss.getStateSpace());
-                const std::string request =
-                    problem.category + "/request" + std::to_string(10000 + problem.index).substr(1) + ".yaml";
-                const std::vector<double> q0 = robot->planningValues(problem.request.start, request + ": start state");
-                const std::vector<double> q1 = robot->planningValues(problem.request.goal, request + ": goal");
                 for (std::size_t k = 0; k < robot->dof(); ++k)
                 {
-                    start[k] = q0[k];
-                    goal[k] = q1[k];
+                    start[k] = problem.start[k];
+                    goal[k] = problem.goal[k];
                 }
                 ss.setStartAndGoalStates(start, goal);
                 for (const std::string &plannerName : a.planners)
