@@ -1,0 +1,181 @@
+// The closed-loop episode: the world (not the model) decides what happens, macros are executed whole or only
+// their first action, the observer sees every plan and step, and success comes from the model's reachedGoal().
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <vector>
+
+#include "ropras/pomdp/Episode.h"
+#include "ropras/pomdp/PomcpSolver.h"
+#include "ropras/pomdp/Tiger.h"
+#include "ropras/pomdp/World.h"
+
+namespace
+{
+    using namespace ropras::pomdp;
+
+    /** \brief Position on a line; every action moves +1; terminal (and a goal) at `goal`. */
+    struct LineModel
+    {
+        using State = int;
+        using Action = int;
+        using Observation = int;
+        int goal{5};
+
+        StepResult<State, Observation> step(State s, Action a, Rng &) const noexcept
+        {
+            const int next = s + a;
+            return {next, next, -1.0, next >= goal};
+        }
+        double observationProbability(Observation o, State s, Action) const noexcept { return o == s ? 1.0 : 0.0; }
+        State sampleInitialState(Rng &) const noexcept { return 0; }
+        double discount() const noexcept { return 0.5; }
+        std::size_t numActions() const noexcept { return 1; }
+        Action action(std::size_t) const noexcept { return 1; }
+        bool reachedGoal(State s) const noexcept { return s >= goal; }
+    };
+
+    /** \brief Always plans the macro (1, 1, 1). */
+    class FixedSolver final : public Solver<LineModel>
+    {
+    public:
+        std::string name() const override { return "fixed"; }
+        PlanResult<int> plan(BeliefView<int>, const Budget &, Rng &) override
+        {
+            PlanResult<int> out;
+            out.action = {1, 1, 1};
+            out.valid = true;
+            out.statistics.simulations = 7;
+            return out;
+        }
+    };
+
+    /** \brief A world that differs from the model: every action moves two cells. */
+    class FastWorld final : public World<LineModel>
+    {
+    public:
+        void reset(const int &s) override { state_ = s; }
+        const int &state() const override { return state_; }
+        StepResult<int, int> step(const int &a, Rng &) override
+        {
+            state_ += 2 * a;
+            return {state_, state_, -1.0, state_ >= 5};
+        }
+
+    private:
+        int state_{0};
+    };
+
+    class CountingObserver final : public EpisodeObserver<LineModel>
+    {
+    public:
+        void onStart(const int &s, const std::vector<int> &) override { states.push_back(s); }
+        void onPlan(std::size_t step, const std::vector<int> &macro, const SearchStatistics &) override
+        {
+            planSteps.push_back(step);
+            macroLengths.push_back(macro.size());
+        }
+        void onStep(std::size_t step, const int &, const StepResult<int, int> &r, const std::vector<int> &) override
+        {
+            EXPECT_EQ(step, states.size());
+            states.push_back(r.next);
+        }
+        std::vector<int> states;
+        std::vector<std::size_t> planSteps, macroLengths;
+    };
+
+    EpisodeResult runLine(World<LineModel> &world, bool replanEveryStep, std::size_t maxSteps,
+                          EpisodeObserver<LineModel> *observer = nullptr)
+    {
+        auto model = std::make_shared<const LineModel>();
+        FixedSolver solver;
+        ParticleFilterSettings fs;
+        fs.numParticles = 4;
+        ParticleFilter<LineModel> filter(model, fs);
+        Rng rng(3);
+        filter.initialize(rng);
+        EpisodeSettings settings;
+        settings.maxSteps = maxSteps;
+        settings.replanEveryStep = replanEveryStep;
+        return runEpisode(*model, solver, filter, world, settings, rng, observer);
+    }
+}  // namespace
+
+TEST(EpisodeTest, ExecutesWholeMacrosThenReplans)
+{
+    SimulatedWorld<LineModel> world(std::make_shared<const LineModel>());
+    CountingObserver observer;
+    const auto r = runLine(world, false, 100, &observer);
+    EXPECT_EQ(r.steps, 5u);
+    EXPECT_EQ(r.plans, 2u);  // 3 steps, then 2 of the second macro
+    EXPECT_TRUE(r.terminal);
+    EXPECT_TRUE(r.success);
+    EXPECT_EQ(r.search.simulations, 14u);
+    EXPECT_DOUBLE_EQ(r.undiscountedReturn, -5.0);
+    EXPECT_DOUBLE_EQ(r.discountedReturn, -(1 + 0.5 + 0.25 + 0.125 + 0.0625));
+    EXPECT_EQ(observer.states, (std::vector<int>{0, 1, 2, 3, 4, 5}));
+    EXPECT_EQ(observer.planSteps, (std::vector<std::size_t>{0, 3}));
+    EXPECT_EQ(observer.macroLengths, (std::vector<std::size_t>{3, 3}));
+}
+
+TEST(EpisodeTest, ReplanEveryStepExecutesOnlyTheFirstAction)
+{
+    SimulatedWorld<LineModel> world(std::make_shared<const LineModel>());
+    CountingObserver observer;
+    const auto r = runLine(world, true, 100, &observer);
+    EXPECT_EQ(r.steps, 5u);
+    EXPECT_EQ(r.plans, 5u);
+    EXPECT_EQ(observer.macroLengths, (std::vector<std::size_t>(5, 1)));
+    EXPECT_TRUE(r.success);
+}
+
+TEST(EpisodeTest, TheWorldDecidesWhatHappens)
+{
+    FastWorld world;
+    CountingObserver observer;
+    const auto r = runLine(world, false, 100, &observer);
+    EXPECT_EQ(r.steps, 3u);  // 2, 4, 6: the world moves two cells per action although the model says one
+    EXPECT_EQ(observer.states, (std::vector<int>{0, 2, 4, 6}));
+    EXPECT_TRUE(r.success);  // reachedGoal() of the world's final state
+}
+
+TEST(EpisodeTest, HorizonStopsWithoutSuccess)
+{
+    SimulatedWorld<LineModel> world(std::make_shared<const LineModel>());
+    const auto r = runLine(world, false, 4);
+    EXPECT_EQ(r.steps, 4u);
+    EXPECT_FALSE(r.terminal);
+    EXPECT_FALSE(r.success);
+}
+
+TEST(EpisodeTest, SimulatedWorldMatchesTheModelOnlyOverload)
+{
+    auto model = std::make_shared<const TigerModel>();
+    EpisodeSettings settings;
+    settings.maxSteps = 30;
+    settings.budget = Budget::ofSimulations(300);
+    ParticleFilterSettings fs;
+    fs.numParticles = 50;
+    auto run = [&](bool explicitWorld)
+    {
+        PomcpSolver<TigerModel> solver(model, nullptr, PomcpSettings(), "pomcp");
+        ParticleFilter<TigerModel> filter(model, fs);
+        Rng rng(11);
+        filter.initialize(rng);
+        if (!explicitWorld)
+            return runEpisode(*model, solver, filter, settings, rng);
+        SimulatedWorld<TigerModel> world(model);
+        return runEpisode(*model, solver, filter, world, settings, rng);
+    };
+    const auto a = run(false);
+    const auto b = run(true);
+    EXPECT_EQ(a.steps, b.steps);
+    EXPECT_DOUBLE_EQ(a.discountedReturn, b.discountedReturn);
+    EXPECT_EQ(a.search.simulations, b.search.simulations);
+    EXPECT_FALSE(a.success);  // Tiger has no reachedGoal()
+}
+
+TEST(EpisodeTest, SimulatedWorldRejectsANullModel)
+{
+    EXPECT_THROW(SimulatedWorld<TigerModel>(nullptr), ropras::Error);
+}
