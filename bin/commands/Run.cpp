@@ -1,0 +1,286 @@
+// `ropras run`: episodes of a built-in scenario with a solver, in parallel threads; JSON lines and the table.
+#include <unistd.h>
+
+#include <ompl/util/Console.h>
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "ArgumentChecks.h"
+#include "CommandRegistry.h"
+#include "ropras/core/Error.h"
+#include "ropras/scenarios/ExperimentRunner.h"
+#include "ropras/scenarios/ResultTable.h"
+#include "ropras/scenarios/ScenarioRegistry.h"
+
+namespace
+{
+    struct RunOptions
+    {
+        std::string scenario;
+        std::string solver{"ropras3"};
+        std::string heuristic{"dynamic"};
+        double epsilon{0.0};
+        std::string planner{"VectorizedRRTConnect"};
+        std::size_t episodes{30};
+        double planTime{0.0};
+        std::size_t sims{0};
+        std::uint64_t seed{1};
+        std::size_t threads{0};
+        std::string shard{"0/1"};
+        std::string out;
+        std::string record;
+        std::size_t beliefEvery{0};
+        std::size_t maxParticles{200};
+        std::vector<std::string> params;
+        std::string config;
+        bool replanEveryStep{false};
+        bool printConfig{false};
+        bool listScenarios{false};
+        bool quiet{false};
+    };
+
+    std::string duration(double seconds)
+    {
+        const auto s = static_cast<long long>(seconds + 0.5);
+        char buffer[32];
+        if (s >= 3600)
+            std::snprintf(buffer, sizeof(buffer), "%lldh%02lldm%02llds", s / 3600, (s / 60) % 60, s % 60);
+        else if (s >= 60)
+            std::snprintf(buffer, sizeof(buffer), "%lldm%02llds", s / 60, s % 60);
+        else
+            std::snprintf(buffer, sizeof(buffer), "%llds", s);
+        return buffer;
+    }
+
+    ropras::scenarios::ScenarioOptions scenarioOptions(const std::string &path)
+    {
+        ropras::scenarios::ScenarioOptions options;
+        if (path.empty())
+        {
+            return options;
+        }
+        std::ifstream file(path);
+        if (!file)
+        {
+            throw ropras::Error("--config: cannot read \"" + path + "\"");
+        }
+        try
+        {
+            options.overrides = nlohmann::json::parse(file);
+        }
+        catch (const nlohmann::json::parse_error &e)
+        {
+            throw ropras::Error("--config \"" + path + "\": malformed JSON: " + e.what());
+        }
+        if (!options.overrides.is_object())
+        {
+            throw ropras::Error("--config \"" + path + "\": must be a JSON object of configuration keys, not " +
+                                std::string(options.overrides.type_name()));
+        }
+        options.source = path;
+        return options;
+    }
+
+    int run(const RunOptions &o)
+    {
+        namespace sc = ropras::scenarios;
+        ompl::msg::setLogLevel(ompl::msg::LOG_WARN);  // OMPL's per-plan info lines would drown the progress
+        const auto &registry = sc::scenarioRegistry();
+        if (o.listScenarios)
+        {
+            for (const auto &name : registry.names())
+            {
+                std::cout << name << ": " << registry.get(name).description << '\n';
+            }
+            return 0;
+        }
+        if (o.scenario.empty())
+        {
+            throw ropras::Error("--scenario is required (known: " +
+                                [&]
+                                {
+                                    std::string known;
+                                    for (const auto &n : registry.names())
+                                        known += (known.empty() ? "" : ", ") + n;
+                                    return known;
+                                }() +
+                                ")");
+        }
+        const auto scenario = registry.create(o.scenario, scenarioOptions(o.config));
+
+        sc::ExperimentSettings settings;
+        settings.run.solver = o.solver;
+        settings.run.heuristic = o.heuristic;
+        settings.run.epsilon = o.epsilon;
+        settings.run.planner = o.planner;
+        settings.run.budget = ropras::pomdp::Budget{o.sims, o.planTime};
+        settings.run.replanEveryStep = o.replanEveryStep;
+        settings.run.params = ropras::pomdp::ParameterMap::parse(o.params);
+        settings.episodes = o.episodes;
+        settings.seed = o.seed;
+        settings.threads = o.threads;
+        settings.shard = sc::Shard::parse(o.shard);
+        settings.recordDir = o.record;
+        settings.record.beliefEvery = o.beliefEvery;
+        settings.record.maxParticles = o.maxParticles;
+
+        // every setting is checked before anything is written or started
+        const auto resolved = sc::resolvedRunSettings(*scenario, settings.run);
+        scenario->validate(resolved);
+        if (o.printConfig)
+        {
+            std::cout << sc::experimentConfiguration(*scenario, settings, resolved).dump(2) << '\n';
+            return 0;
+        }
+
+        std::unique_ptr<std::ofstream> out;
+        if (!o.out.empty())
+        {
+            out = std::make_unique<std::ofstream>(o.out, std::ios::app);
+            if (!*out)
+            {
+                throw ropras::Error("--out: cannot open \"" + o.out + "\" for appending");
+            }
+        }
+
+        const bool terminal = isatty(fileno(stderr)) != 0;
+        std::size_t successes = 0;
+        if (!o.quiet)
+        {
+            std::size_t owned = 0;
+            for (std::size_t e = 0; e < settings.episodes; ++e)
+                owned += settings.shard.owns(e) ? 1 : 0;
+            const auto &b = resolved.budget;
+            std::cerr << "ropras run: " << scenario->name() << " / " << o.solver << ", " << owned << " of "
+                      << settings.episodes << " episodes (shard " << settings.shard.str() << "), "
+                      << (b.simulations > 0 ? std::to_string(b.simulations) + " simulations"
+                                            : std::to_string(b.seconds) + " s")
+                      << " per plan, seed " << o.seed << '\n';
+        }
+        sc::ExperimentCallbacks callbacks;
+        callbacks.onRecord = [&](const nlohmann::json &record)
+        {
+            if (out)
+            {
+                *out << record.dump() << '\n';
+                out->flush();
+                if (!*out)
+                {
+                    throw ropras::Error("--out: writing to \"" + o.out + "\" failed");
+                }
+            }
+        };
+        callbacks.onProgress = [&](const sc::ExperimentProgress &p)
+        {
+            if (o.quiet)
+            {
+                return;
+            }
+            const double eta =
+                p.done > 0 ? p.elapsedSeconds / static_cast<double>(p.done) * static_cast<double>(p.total - p.done)
+                           : 0.0;
+            const auto &r = *p.record;
+            successes += r["success"].get<bool>() ? 1 : 0;
+            if (terminal)
+            {
+                constexpr int WIDTH = 30;
+                const int filled = static_cast<int>(WIDTH * p.done / std::max<std::size_t>(1, p.total));
+                std::cerr << "\r[" << std::string(filled, '#') << std::string(WIDTH - filled, '.') << "] " << p.done
+                          << "/" << p.total << " episodes, " << successes << " successes, "
+                          << duration(p.elapsedSeconds) << " elapsed, ETA " << duration(eta) << "   " << std::flush;
+                if (p.done == p.total)
+                {
+                    std::cerr << '\n';
+                }
+            }
+            else
+            {
+                char line[256];
+                std::snprintf(line, sizeof(line),
+                              "episode %zu done (%zu/%zu): %s, return %.1f, %zu steps, %.0f sims/call; elapsed %s, "
+                              "ETA %s",
+                              r["episode"].get<std::size_t>(), p.done, p.total,
+                              r["success"].get<bool>() ? "success" : "failure", r["undiscounted_return"].get<double>(),
+                              r["steps"].get<std::size_t>(), r["sims_per_call"].get<double>(),
+                              duration(p.elapsedSeconds).c_str(), duration(eta).c_str());
+                std::cerr << line << '\n';
+            }
+        };
+
+        const auto records = sc::runExperiment(*scenario, settings, callbacks);
+        if (records.empty())
+        {
+            std::cerr << "ropras run: shard " << settings.shard.str() << " of " << settings.episodes
+                      << " episodes owns no episode\n";
+            return 0;
+        }
+        sc::ResultTable table;
+        for (std::size_t i = 0; i < records.size(); ++i)
+        {
+            table.add(records[i], "episode " + records[i]["episode"].dump());
+        }
+        std::cout << table.markdown();
+        return 0;
+    }
+
+    std::function<int()> setup(CLI::App &app)
+    {
+        auto o = std::make_shared<RunOptions>();
+        app.add_option("--scenario", o->scenario,
+                       "Scenario: light-dark, maze2d, random3d-1 ... random3d-4, multi-drone");
+        app.add_option("--solver", o->solver, "ropras3, pomcp, rpomcp, bplan or refbasic")->capture_default_str();
+        app.add_option("--heuristic", o->heuristic, "Sampling heuristic of the reference policy: uniform or dynamic")
+            ->capture_default_str();
+        app.add_option("--epsilon", o->epsilon, "Epsilon-greedy exploration mixed into the heuristic, in [0, 1]")
+            ->capture_default_str()
+            ->check(ropras::bin::NON_NEGATIVE_NUMBER);
+        app.add_option("--planner", o->planner, "OMPL planner of the reference policy (any registered name)")
+            ->capture_default_str();
+        app.add_option("--episodes", o->episodes, "Episodes of the experiment (all shards together)")
+            ->capture_default_str()
+            ->check(ropras::bin::POSITIVE_COUNT);
+        auto *planTime = app.add_option("--plan-time", o->planTime,
+                                        "Seconds per planning call (default: the scenario's, a tenth of the paper's)")
+                             ->check(ropras::bin::POSITIVE_NUMBER);
+        auto *sims = app.add_option("--sims", o->sims, "Simulations per planning call (exactly reproducible)")
+                         ->check(ropras::bin::POSITIVE_COUNT);
+        planTime->excludes(sims);
+        app.add_option("--seed", o->seed, "Run seed; episode e runs with a seed mixed from (seed, e)")
+            ->capture_default_str()
+            ->check(ropras::bin::NON_NEGATIVE_COUNT);
+        app.add_option("--threads", o->threads, "Worker threads (0 = hardware concurrency)")
+            ->capture_default_str()
+            ->check(ropras::bin::NON_NEGATIVE_COUNT);
+        app.add_option("--shard", o->shard, "Run only episodes e with e % N == i (i/N, e.g. 3/10)")
+            ->capture_default_str();
+        app.add_option("--out", o->out, "Append one JSON line per episode to this file");
+        app.add_option("--record", o->record, "Write DIR/<scenario>-<solver>-<episode>.json for `ropras render`");
+        app.add_option("--belief-every", o->beliefEvery,
+                       "With --record: belief particles every K steps (0 = at the start and the end)")
+            ->capture_default_str()
+            ->check(ropras::bin::NON_NEGATIVE_COUNT);
+        app.add_option("--max-particles", o->maxParticles, "With --record: at most this many particles per belief")
+            ->capture_default_str()
+            ->check(ropras::bin::POSITIVE_COUNT);
+        app.add_option("--param", o->params, "Solver / filter / planner parameter name=value (repeatable)");
+        app.add_option("--config", o->config, "JSON file overriding keys of the scenario's default configuration")
+            ->check(CLI::ExistingFile);
+        app.add_flag("--replan-every-step", o->replanEveryStep,
+                     "Replan after every primitive step (default: after each executed macro-action)");
+        app.add_flag("--print-config", o->printConfig, "Print the effective configuration as JSON and exit");
+        app.add_flag("--list-scenarios", o->listScenarios, "List the scenarios and exit");
+        app.add_flag("--quiet", o->quiet, "No progress output");
+        return [o] { return run(*o); };
+    }
+
+    const ropras::bin::CommandRegistrar reg{
+        {"run", "Run episodes of a scenario with a solver (parallel, sharded); JSON lines and the paper's table",
+         setup}};
+}  // namespace

@@ -1,0 +1,64 @@
+// `ropras table FILES...`: merges the JSON lines of `ropras run` (shards, solvers, scenarios) into one table.
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "CommandRegistry.h"
+#include "ropras/core/Error.h"
+#include "ropras/scenarios/ResultTable.h"
+
+namespace
+{
+    struct TableOptions
+    {
+        std::vector<std::string> files;
+        std::string out;
+    };
+
+    int run(const TableOptions &o)
+    {
+        ropras::scenarios::ResultTable table;
+        for (const auto &file : o.files)
+        {
+            if (table.addFile(file) == 0)
+            {
+                std::cerr << "ropras table: warning: " << file << " holds no episode record\n";
+            }
+        }
+        for (const auto &warning : table.warnings())
+        {
+            std::cerr << "ropras table: warning: " << warning << '\n';
+        }
+        if (table.size() == 0)
+        {
+            throw ropras::Error("no episode records in " + std::to_string(o.files.size()) + " file(s)");
+        }
+        const std::string markdown = table.markdown();
+        std::cout << markdown;
+        if (!o.out.empty())
+        {
+            std::ofstream file(o.out);
+            file << markdown;
+            if (!file)
+            {
+                throw ropras::Error("--out: cannot write \"" + o.out + "\"");
+            }
+        }
+        return 0;
+    }
+
+    std::function<int()> setup(CLI::App &app)
+    {
+        auto o = std::make_shared<TableOptions>();
+        app.add_option("files", o->files, "JSON-lines files written by `ropras run --out`")
+            ->required()
+            ->check(CLI::ExistingFile);
+        app.add_option("--out", o->out, "Also write the Markdown table to this file");
+        return [o] { return run(*o); };
+    }
+
+    const ropras::bin::CommandRegistrar reg{
+        {"table", "Merge the JSON lines of `ropras run` (shards, solvers, scenarios) into one Markdown table", setup}};
+}  // namespace

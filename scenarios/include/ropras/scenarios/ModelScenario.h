@@ -1,0 +1,290 @@
+#ifndef ROPRAS_SCENARIOS_MODEL_SCENARIO_H
+#define ROPRAS_SCENARIOS_MODEL_SCENARIO_H
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ropras/core/Error.h"
+#include "ropras/pomdp/Episode.h"
+#include "ropras/pomdp/OmplPathPlanner.h"
+#include "ropras/pomdp/ParticleFilter.h"
+#include "ropras/pomdp/SamplingHeuristic.h"
+#include "ropras/pomdp/SolverFactory.h"
+#include "ropras/pomdp/World.h"
+#include "ropras/scenarios/Scenario.h"
+
+namespace ropras::scenarios
+{
+    /** \brief A point drawn in pictures (x, y, z; z = 0 in 2-D). */
+    using Point3 = std::array<double, 3>;
+
+    /** \brief Everything a scenario over model type M supplies to ModelScenario. */
+    template <class M>
+    struct ScenarioParts
+    {
+        using State = typename M::State;
+        /** \brief The informed reference policy of one episode (ropras3, rpomcp, bplan): built from the run
+            settings (heuristic, epsilon, planner), reading its own parameters from \a params (e.g.
+            plan_time, macro_length), its planner seeded with \a seed. Throws ropras::Error on bad settings. */
+        using PolicyFactory = std::function<std::unique_ptr<pomdp::ReferencePolicy<M>>(
+            const RunSettings &settings, const pomdp::ParameterMap &params, std::uint64_t seed)>;
+
+        std::string name;
+        std::string description;
+        std::shared_ptr<const M> model;
+        PolicyFactory referencePolicy;
+        /// Ref-Basic's policy; empty = random macros (parameters macro_min, macro_max)
+        PolicyFactory basicReferencePolicy;
+        /// a fresh world for one episode (e.g. a Bullet collision world built from the scene)
+        std::function<std::unique_ptr<pomdp::World<M>>()> world;
+        /// the positions to draw for a state (one robot, or several drones and a target)
+        std::function<void(const State &, std::vector<Point3> &)> points;
+        /// names of those positions, e.g. {"robot"} or {"drone1", ..., "target"}
+        std::vector<std::string> pointLabels;
+        /// solver and filter parameter defaults of this scenario (the user's --param values override them)
+        std::map<std::string, double> defaults;
+        std::size_t horizon{100};
+        double defaultPlanSeconds{0.1};
+        nlohmann::json config;
+        nlohmann::json scene;
+    };
+
+    /** \brief The sampling heuristic named by \a settings ("uniform" or "dynamic", then epsilon-greedy when
+        epsilon > 0) over \a space; throws ropras::Error for another name or an epsilon outside [0, 1]. */
+    template <class State, class Target>
+    std::unique_ptr<pomdp::SamplingHeuristic<State, Target>> makeSamplingHeuristic(
+        const RunSettings &settings, std::shared_ptr<const pomdp::TargetSpace<State, Target>> space)
+    {
+        std::unique_ptr<pomdp::SamplingHeuristic<State, Target>> h;
+        if (settings.heuristic == "uniform")
+        {
+            h = std::make_unique<pomdp::UniformHeuristic<State, Target>>(space);
+        }
+        else if (settings.heuristic == "dynamic")
+        {
+            h = std::make_unique<pomdp::DynamicHeuristic<State, Target>>(space);
+        }
+        else
+        {
+            throw Error("unknown sampling heuristic \"" + settings.heuristic + "\" (known: uniform, dynamic)");
+        }
+        if (!(settings.epsilon >= 0.0 && settings.epsilon <= 1.0))
+        {
+            throw Error("epsilon = " + std::to_string(settings.epsilon) + " is not in [0, 1]");
+        }
+        if (settings.epsilon > 0.0)
+        {
+            h = std::make_unique<pomdp::EpsilonGreedyHeuristic<State, Target>>(space, std::move(h), settings.epsilon);
+        }
+        return h;
+    }
+
+    /** \brief OmplPathPlannerSettings of a reference policy: the planner named by \a settings, the scenario's
+        per-plan time limit \a planTime and motion resolution, overridden by the parameters plan_time,
+        plan_iterations and shortcut; the planner seeded with \a seed when it has a "seed" parameter (ours). */
+    inline pomdp::OmplPathPlannerSettings referencePlannerSettings(const RunSettings &settings,
+                                                                   const pomdp::ParameterMap &params, double planTime,
+                                                                   double resolution, std::uint64_t seed)
+    {
+        pomdp::OmplPathPlannerSettings s;
+        s.planner = settings.planner;
+        s.timeLimit = planTime;
+        s.resolution = resolution;
+        s.readParameters(params);
+        if (s.planner == "VectorizedRRTConnect")
+        {
+            s.plannerParams["seed"] = std::to_string(seed % 4294967291ULL + 1);
+        }
+        s.validate();
+        return s;
+    }
+
+    /** \brief Records an episode as JSON for `ropras render`. */
+    template <class M>
+    class EpisodeRecorder final : public pomdp::EpisodeObserver<M>
+    {
+    public:
+        using typename pomdp::EpisodeObserver<M>::State;
+        using typename pomdp::EpisodeObserver<M>::Action;
+        using typename pomdp::EpisodeObserver<M>::Observation;
+
+        EpisodeRecorder(const ScenarioParts<M> &parts, const RecordSettings &settings, nlohmann::json &out)
+            : parts_(parts), settings_(settings), out_(out)
+        {
+            out_["labels"] = parts_.pointLabels;
+            out_["trajectory"] = nlohmann::json::array();
+            out_["rewards"] = nlohmann::json::array();
+            out_["plans"] = nlohmann::json::array();
+            out_["beliefs"] = nlohmann::json::array();
+        }
+
+        void onStart(const State &trueState, const std::vector<State> &particles) override
+        {
+            out_["trajectory"].push_back(pointsOf(trueState));
+            addBelief(0, particles);
+        }
+        void onPlan(std::size_t step, const std::vector<Action> &macro, const pomdp::SearchStatistics &s) override
+        {
+            out_["plans"].push_back({{"step", step}, {"length", macro.size()}, {"simulations", s.simulations}});
+        }
+        void onStep(std::size_t step, const Action &, const pomdp::StepResult<State, Observation> &result,
+                    const std::vector<State> &particles) override
+        {
+            out_["trajectory"].push_back(pointsOf(result.next));
+            out_["rewards"].push_back(result.reward);
+            last_ = particles;
+            lastStep_ = step;
+            if (settings_.beliefEvery > 0 && step % settings_.beliefEvery == 0)
+            {
+                addBelief(step, particles);
+            }
+        }
+        /** \brief Adds the final belief unless it was just recorded. */
+        void finish()
+        {
+            if (lastStep_ > 0 && (settings_.beliefEvery == 0 || lastStep_ % settings_.beliefEvery != 0))
+            {
+                addBelief(lastStep_, last_);
+            }
+        }
+
+    private:
+        nlohmann::json pointsOf(const State &s)
+        {
+            scratch_.clear();
+            parts_.points(s, scratch_);
+            return scratch_;
+        }
+        void addBelief(std::size_t step, const std::vector<State> &particles)
+        {
+            nlohmann::json list = nlohmann::json::array();
+            const std::size_t n = particles.size();
+            const std::size_t keep = std::min(n, settings_.maxParticles);
+            for (std::size_t i = 0; i < keep; ++i)
+            {
+                list.push_back(pointsOf(particles[i * n / keep]));
+            }
+            out_["beliefs"].push_back({{"step", step}, {"particles", std::move(list)}});
+        }
+
+        const ScenarioParts<M> &parts_;
+        RecordSettings settings_;
+        nlohmann::json &out_;
+        std::vector<Point3> scratch_;
+        std::vector<State> last_;
+        std::size_t lastStep_{0};
+    };
+
+    /** \brief A Scenario over model type M from its parts: builds a fresh solver (by name, pomdp::makeSolver),
+        particle filter and world per episode and runs pomdp::runEpisode(). Random streams per episode:
+        Rng(seed) seeds the filter and solver, and splits off the world's and the reference planner's. */
+    template <class M>
+    class ModelScenario final : public Scenario
+    {
+    public:
+        explicit ModelScenario(ScenarioParts<M> parts) : parts_(std::move(parts))
+        {
+            if (!parts_.model || !parts_.referencePolicy || !parts_.world || !parts_.points)
+            {
+                throw Error("scenario " + parts_.name + ": incomplete parts (model, reference policy, world, points)");
+            }
+        }
+
+        std::string name() const override { return parts_.name; }
+        std::string description() const override { return parts_.description; }
+        nlohmann::json config() const override { return parts_.config; }
+        nlohmann::json scene() const override { return parts_.scene; }
+        double defaultPlanSeconds() const override { return parts_.defaultPlanSeconds; }
+        std::size_t horizon() const override { return parts_.horizon; }
+        const ScenarioParts<M> &parts() const { return parts_; }
+
+        void validate(const RunSettings &settings) const override
+        {
+            pomdp::Rng rng(1);
+            (void)build(settings, rng);
+        }
+
+        pomdp::EpisodeResult runEpisode(const RunSettings &settings, std::uint64_t seed, nlohmann::json *recording,
+                                        const RecordSettings &record) const override
+        {
+            pomdp::Rng rng(seed);
+            auto parts = build(settings, rng);
+            pomdp::ParticleFilter<M> filter(parts_.model, parts.filter);
+            filter.initialize(rng);
+            auto world = parts_.world();
+            pomdp::EpisodeSettings episode;
+            episode.maxSteps = parts_.horizon;
+            episode.budget = settings.budget;
+            if (episode.budget.simulations == 0 && episode.budget.seconds == 0.0)
+            {
+                episode.budget.seconds = parts_.defaultPlanSeconds;
+            }
+            episode.replanEveryStep = settings.replanEveryStep;
+            if (!recording)
+            {
+                return pomdp::runEpisode(*parts_.model, *parts.solver, filter, *world, episode, rng);
+            }
+            *recording = nlohmann::json::object();
+            (*recording)["scenario"] = parts_.name;
+            (*recording)["seed"] = seed;
+            (*recording)["scene"] = parts_.scene;
+            EpisodeRecorder<M> recorder(parts_, record, *recording);
+            auto result = pomdp::runEpisode(*parts_.model, *parts.solver, filter, *world, episode, rng, &recorder);
+            recorder.finish();
+            (*recording)["success"] = result.success;
+            (*recording)["steps"] = result.steps;
+            (*recording)["discounted_return"] = result.discountedReturn;
+            return result;
+        }
+
+    private:
+        struct Built
+        {
+            std::unique_ptr<pomdp::Solver<M>> solver;
+            pomdp::ParticleFilterSettings filter;
+        };
+
+        Built build(const RunSettings &settings, pomdp::Rng &rng) const
+        {
+            const std::uint64_t plannerSeed = rng.split();
+            pomdp::ModelComponents<M> components;
+            components.model = parts_.model;
+            components.defaults = parts_.defaults;
+            const auto &policy = parts_.referencePolicy;
+            components.referencePolicy = [&settings, &policy, plannerSeed](const pomdp::ParameterMap &p)
+            { return policy(settings, p, plannerSeed); };
+            if (parts_.basicReferencePolicy)
+            {
+                const auto &basic = parts_.basicReferencePolicy;
+                components.basicReferencePolicy = [&settings, &basic, plannerSeed](const pomdp::ParameterMap &p)
+                { return basic(settings, p, plannerSeed); };
+            }
+            const pomdp::ParameterMap merged = pomdp::withDefaults(components, settings.params);
+            Built out;
+            out.solver = pomdp::makeSolver(settings.solver, components, merged);
+            out.filter = pomdp::ParticleFilterSettings::fromParameters(merged);
+            std::set<std::string> exempt;
+            for (const auto &entry : components.defaults)
+            {
+                if (!settings.params.contains(entry.first))
+                {
+                    exempt.insert(entry.first);
+                }
+            }
+            merged.requireAllUsed("solver " + settings.solver + " on scenario " + parts_.name, exempt);
+            return out;
+        }
+
+        ScenarioParts<M> parts_;
+    };
+}  // namespace ropras::scenarios
+
+#endif

@@ -1,0 +1,77 @@
+#ifndef ROPRAS_SCENARIOS_NAVIGATION_CONFIG_H
+#define ROPRAS_SCENARIOS_NAVIGATION_CONFIG_H
+
+#include <array>
+#include <cstddef>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace ropras::scenarios
+{
+    /** \brief An axis-aligned box [lo, hi] (m). In 2-D scenarios z spans [-1, 1] (the robot moves at z = 0). */
+    struct NavBox
+    {
+        std::array<double, 3> lo{{0.0, 0.0, 0.0}};
+        std::array<double, 3> hi{{0.0, 0.0, 0.0}};
+
+        std::array<double, 3> center() const
+        {
+            return {{0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2])}};
+        }
+        /// whether the point lies in the box (boundary included)
+        bool contains(const double *p) const noexcept
+        {
+            return p[0] >= lo[0] && p[0] <= hi[0] && p[1] >= lo[1] && p[1] <= hi[1] && p[2] >= lo[2] && p[2] <= hi[2];
+        }
+    };
+
+    /** \brief Everything that defines a navigation problem (Light-Dark, Maze2D, Random3D): the effective
+        configuration after overrides, validated. The JSON keys are documented in doc/scenarios.md. */
+    struct NavigationConfig
+    {
+        std::string scenario;    ///< name for error messages
+        int dims{2};             ///< 2 or 3
+        NavBox bounds;           ///< the robot centre stays inside
+        double stepLength{0.5};  ///< m per primitive action
+        double slip{0.0};        ///< probability of executing a different action (uniformly among the others)
+        double robotRadius{0.2};
+        double stepReward{-0.1};
+        double goalReward{100.0};
+        double dangerReward{-2000.0};
+        NavBox goal;
+        std::vector<NavBox> walls;             ///< block motion
+        std::vector<NavBox> obstacles;         ///< block motion
+        std::vector<NavBox> dangerZones;       ///< entering: dangerReward, terminal
+        std::vector<NavBox> observationZones;  ///< light stripe / landmarks: position observed
+        double observationSigma{0.1};
+        double observationBin{1.0};
+        std::vector<std::array<double, 3>> starts;  ///< initial belief: one of them uniformly ...
+        double initialSigma{0.0};                   ///< ... plus N(0, initialSigma) per axis
+        double reinvigorateSigma{0.0};              ///< particle reinvigoration jitter per axis (m)
+        double discount{0.99};
+        std::size_t horizon{60};
+        double planSeconds{0.1};          ///< default planning time per call
+        double referencePlanTime{0.003};  ///< per-plan OMPL time limit of the reference policy (s)
+        double planResolution{0.1};       ///< motion-check resolution of the reference planner (m)
+        double dangerMargin{0.0};         ///< the planner sees danger zones grown by this much per side (m)
+        bool heuristicValue{false};       ///< leaf value from the goal distance field (NavigationModel::heuristicValue)
+        double plannerRange{2.0};         ///< VectorizedRRTConnect extension step (m)
+        std::map<std::string, double> defaults;  ///< solver / filter parameter defaults
+        nlohmann::json json;                     ///< the effective configuration
+    };
+
+    /** \brief Reads and validates a navigation configuration; throws ropras::Error naming \a scenario, the key
+        and the value for a missing key, a wrong type, a non-finite value, a negative size, a box outside the
+        bounds, a start outside the bounds, in collision, in a danger zone or in the goal. */
+    NavigationConfig parseNavigationConfig(const std::string &scenario, const nlohmann::json &json);
+
+    /** \brief The scene for `ropras render` (format: doc/scenarios.md). */
+    nlohmann::json navigationScene(const NavigationConfig &config);
+
+    /** \brief A box as JSON ([[lo...], [hi...]], dims entries each). */
+    nlohmann::json boxToJson(const NavBox &box, int dims);
+}  // namespace ropras::scenarios
+
+#endif

@@ -1,0 +1,112 @@
+#include "ropras/scenarios/ScenarioRegistry.h"
+
+#include <cmath>
+
+#include "BuiltinScenarios.h"
+#include "ropras/core/Error.h"
+
+namespace ropras::scenarios
+{
+    void ScenarioRegistry::add(ScenarioEntry entry)
+    {
+        if (entry.name.empty() || !entry.factory)
+        {
+            throw Error("ScenarioRegistry: a scenario needs a name and a factory");
+        }
+        if (entries_.count(entry.name) != 0)
+        {
+            throw Error("ScenarioRegistry: scenario \"" + entry.name + "\" is registered twice");
+        }
+        const std::string name = entry.name;
+        entries_.emplace(name, std::move(entry));
+    }
+
+    const ScenarioEntry &ScenarioRegistry::get(const std::string &name) const
+    {
+        const auto it = entries_.find(name);
+        if (it == entries_.end())
+        {
+            std::string known;
+            for (const auto &entry : entries_)
+            {
+                known += (known.empty() ? "" : ", ") + entry.first;
+            }
+            throw Error("unknown scenario \"" + name + "\" (known: " + known + ")");
+        }
+        return it->second;
+    }
+
+    std::vector<std::string> ScenarioRegistry::names() const
+    {
+        std::vector<std::string> out;
+        for (const auto &entry : entries_)
+        {
+            out.push_back(entry.first);
+        }
+        return out;
+    }
+
+    const ScenarioRegistry &scenarioRegistry()
+    {
+        static const ScenarioRegistry registry = []
+        {
+            ScenarioRegistry r;
+            detail::addBuiltinScenarios(r);
+            return r;
+        }();
+        return registry;
+    }
+
+    namespace
+    {
+        void merge(const std::string &where, const nlohmann::json &defaults, const nlohmann::json &overrides,
+                   const std::string &prefix, nlohmann::json &out)
+        {
+            if (!overrides.is_object())
+            {
+                throw Error(where + ": " + (prefix.empty() ? std::string("the configuration") : "\"" + prefix + "\"") +
+                            " must be a JSON object");
+            }
+            for (const auto &item : overrides.items())
+            {
+                const std::string key = prefix.empty() ? item.key() : prefix + "." + item.key();
+                const auto it = defaults.find(item.key());
+                if (it == defaults.end())
+                {
+                    std::string known;
+                    for (const auto &d : defaults.items())
+                    {
+                        known += (known.empty() ? "" : ", ") + d.key();
+                    }
+                    throw Error(where + ": unknown key \"" + key + "\" (known here: " + known + ")");
+                }
+                const auto &value = item.value();
+                if (it->is_object())
+                {
+                    merge(where, *it, value, key, out[item.key()]);
+                    continue;
+                }
+                const bool sameType =
+                    (it->is_number() && value.is_number()) || it->type() == value.type() || it->is_null();
+                if (!sameType)
+                {
+                    throw Error(where + ": key \"" + key + "\" must be a " + std::string(it->type_name()) + ", not " +
+                                std::string(value.type_name()) + " (" + value.dump() + ")");
+                }
+                if (value.is_number_float() && !std::isfinite(value.get<double>()))
+                {
+                    throw Error(where + ": key \"" + key + "\" is not finite");
+                }
+                out[item.key()] = value;
+            }
+        }
+    }  // namespace
+
+    nlohmann::json applyOverrides(const std::string &scenario, const nlohmann::json &defaults,
+                                  const ScenarioOptions &options)
+    {
+        nlohmann::json out = defaults;
+        merge(options.source + " (scenario " + scenario + ")", defaults, options.overrides, "", out);
+        return out;
+    }
+}  // namespace ropras::scenarios

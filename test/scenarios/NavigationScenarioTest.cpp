@@ -1,0 +1,161 @@
+// The navigation scenarios through the Scenario interface: configuration errors, episodes, determinism.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "ExpectError.h"
+#include "NavigationTestUtil.h"
+
+namespace ropras::scenarios::test
+{
+    using ropras::test::expectErrorMentions;
+
+    TEST(NavigationScenario, RegisteredWithSceneAndConfig)
+    {
+        for (const char *name : {"light-dark", "maze2d", "random3d-1", "random3d-2", "random3d-3", "random3d-4"})
+        {
+            const auto s = navScenario(name);
+            EXPECT_EQ(s->name(), name);
+            const auto scene = s->scene();
+            for (const char *key : {"dims", "bounds", "walls", "obstacles", "danger_zones", "observation_zones", "goal",
+                                    "starts", "robot_radius"})
+            {
+                EXPECT_TRUE(scene.contains(key)) << name << " scene lacks " << key;
+            }
+            EXPECT_EQ(s->config().at("horizon").get<std::size_t>(), s->horizon());
+        }
+        EXPECT_EQ(navScenario("light-dark")->horizon(), 60u);
+        EXPECT_DOUBLE_EQ(navScenario("light-dark")->defaultPlanSeconds(), 0.01);
+        EXPECT_EQ(navScenario("maze2d")->horizon(), 800u);
+        EXPECT_DOUBLE_EQ(navScenario("maze2d")->defaultPlanSeconds(), 0.1);
+    }
+
+    TEST(NavigationScenario, BadOverridesNameTheKey)
+    {
+        expectErrorMentions([] { navScenario("light-dark", {{"lightness", 1.0}}); }, {"light-dark", "lightness"});
+        expectErrorMentions(
+            [] {
+                navScenario("maze2d", {{"slip", std::numeric_limits<double>::quiet_NaN()}});
+            },
+            {"maze2d", "slip"});
+        expectErrorMentions([] { navScenario("maze2d", {{"slip", 1.5}}); }, {"maze2d", "slip", "[0, 1]"});
+        expectErrorMentions(
+            [] {
+                navScenario("light-dark", {{"robot_radius", -0.1}});
+            },
+            {"light-dark", "robot_radius", "> 0"});
+        expectErrorMentions([] { navScenario("light-dark", {{"observation_sigma", 0}}); }, {"observation_sigma"});
+        expectErrorMentions([] { navScenario("light-dark", {{"discount", 1.0}}); }, {"discount"});
+        expectErrorMentions([] { navScenario("light-dark", {{"horizon", 2.5}}); }, {"horizon"});
+        expectErrorMentions([] { navScenario("light-dark", {{"slip", "high"}}); }, {"slip"});
+        expectErrorMentions([] { navScenario("maze2d", {{"danger_margin", -1.0}}); }, {"danger_margin", ">= 0"});
+        expectErrorMentions([] { navScenario("maze2d", {{"heuristic_value", 1}}); }, {"heuristic_value"});
+        // a start in collision with a wall
+        expectErrorMentions(
+            [] {
+                navScenario("maze2d", {{"starts", {{-11.5, 10.0}}}});
+            },
+            {"maze2d", "starts[0]", "collision"});
+        // a start in a danger zone, outside the bounds
+        expectErrorMentions([] { navScenario("maze2d", {{"starts", {{-20, 23}}}}); }, {"starts[0]", "danger"});
+        expectErrorMentions([] { navScenario("light-dark", {{"starts", {{-5, 0}}}}); }, {"starts[0]", "bounds"});
+        // boxes: outside the bounds, inverted, wrong arity
+        expectErrorMentions(
+            [] {
+                navScenario("light-dark", {{"obstacles", {{{3, 3}, {5, 5}}}}});
+            },
+            {"obstacles[0]", "outside the bounds"});
+        expectErrorMentions(
+            [] {
+                navScenario("light-dark", {{"obstacles", {{{3, 3}, {2, 3.5}}}}});
+            },
+            {"obstacles[0]", "lo >= hi"});
+        expectErrorMentions([] { navScenario("light-dark", {{"goal", {{0, 0, 0}, {1, 1, 1}}}}); }, {"goal"});
+        // the URDF must match the configuration
+        expectErrorMentions(
+            [] {
+                navScenario("light-dark", {{"robot_radius", 0.2}});
+            },
+            {"light-dark/robot.urdf", "robot_radius"});
+        expectErrorMentions(
+            [] {
+                navScenario("light-dark", {{"bounds", {{-4, -4}, {4, 5}}}});
+            },
+            {"light-dark/robot.urdf", "bounds"});
+        // Random3D generator
+        expectErrorMentions(
+            [] {
+                navScenario("random3d-1", {{"generator", {{"obstacle_half_size", {2.0, 1.0}}}}});
+            },
+            {"random3d-1", "generator.obstacle_half_size"});
+        expectErrorMentions(
+            [] {
+                navScenario("random3d-2", {{"generator", {{"seed", -1}}}});
+            },
+            {"random3d-2", "generator.seed"});
+    }
+
+    TEST(NavigationScenario, BadRunSettingsAreRejected)
+    {
+        const auto s = navScenario("light-dark");
+        RunSettings settings;
+        settings.params.set("macro_length", 0);
+        expectErrorMentions([&] { s->validate(settings); }, {"macro_length"});
+        RunSettings unknown;
+        unknown.params.set("no_such_parameter", 1);
+        EXPECT_THROW(s->validate(unknown), Error);
+        RunSettings ok;
+        EXPECT_NO_THROW(s->validate(ok));
+    }
+
+    TEST(NavigationScenario, LightDarkEpisodeWithSimulationBudgetIsDeterministic)
+    {
+        const auto s = navScenario("light-dark");
+        RunSettings settings;
+        settings.solver = "ropras3";
+        settings.budget = pomdp::Budget::ofSimulations(40);
+        settings.params.set("plan_iterations", 200);  // the reference planner stops by iterations, not time
+        settings.params.set("plan_time", 1.0);
+        nlohmann::json recording;
+        const auto a = s->runEpisode(settings, 17, &recording);
+        const auto b = s->runEpisode(settings, 17);
+        EXPECT_TRUE(std::isfinite(a.discountedReturn));
+        EXPECT_LE(a.steps, 60u);
+        EXPECT_GT(a.steps, 0u);
+        EXPECT_GT(a.plans, 0u);
+        EXPECT_EQ(a.steps, b.steps);
+        EXPECT_EQ(a.success, b.success);
+        EXPECT_EQ(a.discountedReturn, b.discountedReturn);
+        EXPECT_EQ(a.undiscountedReturn, b.undiscountedReturn);
+        EXPECT_EQ(a.search.simulations, b.search.simulations);
+        EXPECT_EQ(recording.at("trajectory").size(), a.steps + 1);
+        if (a.success)
+        {
+            EXPECT_GT(a.undiscountedReturn, 90.0);
+        }
+        // another solver runs too (POMCP over primitive actions)
+        settings.solver = "pomcp";
+        settings.params = pomdp::ParameterMap();
+        const auto c = s->runEpisode(settings, 3);
+        EXPECT_LE(c.steps, 60u);
+        EXPECT_TRUE(std::isfinite(c.discountedReturn));
+    }
+
+    TEST(NavigationScenario, ShortMaze2DAndRandom3DEpisodesRun)
+    {
+        for (const char *name : {"maze2d", "random3d-3"})
+        {
+            const auto s = navScenario(name, {{"horizon", 40}});
+            RunSettings settings;
+            settings.budget = pomdp::Budget::ofSimulations(20);
+            settings.params.set("plan_iterations", 300);
+            settings.params.set("plan_time", 1.0);
+            const auto a = s->runEpisode(settings, 5);
+            EXPECT_LE(a.steps, 40u) << name;
+            EXPECT_GT(a.steps, 0u) << name;
+            EXPECT_TRUE(std::isfinite(a.discountedReturn)) << name;
+            EXPECT_GT(a.search.simulations, 0u) << name;
+        }
+    }
+}  // namespace ropras::scenarios::test
