@@ -211,6 +211,12 @@ namespace ropras::scenarios
             r.fail("heuristic_value", "must be true or false, not " + heuristic.dump());
         }
         c.heuristicValue = heuristic.get<bool>();
+        const auto &evidence = r.at("termination_evidence");
+        if (!evidence.is_boolean())
+        {
+            r.fail("termination_evidence", "must be true or false, not " + evidence.dump());
+        }
+        c.terminationEvidence = evidence.get<bool>();
 
         const auto &defaults = r.at("defaults");
         if (!defaults.is_object())

@@ -240,6 +240,7 @@ namespace ropras::scenarios
             out.terminal = true;
         }
         out.observation = Observation{};
+        out.observation.ended = config_.terminationEvidence && out.terminal;
         if (observable(next.p))
         {
             out.observation.seen = true;
@@ -265,6 +266,11 @@ namespace ropras::scenarios
 
     double NavigationModel::observationProbability(const Observation &o, const State &next, Action) const noexcept
     {
+        // a particle in the goal or a danger zone would have ended the episode: impossible when it went on
+        if (config_.terminationEvidence && o.ended != (inDanger(next.p) || config_.goal.contains(next.p)))
+        {
+            return 0.0;
+        }
         if (!observable(next.p))
         {
             return o.seen ? 0.0 : 1.0;
@@ -314,9 +320,9 @@ namespace ropras::scenarios
     {
         if (!o.seen)
         {
-            return NONE_KEY;
+            return o.ended ? NONE_KEY ^ 1u : NONE_KEY;
         }
-        std::uint64_t h = 0x84222325cbf29ce4ULL;
+        std::uint64_t h = o.ended ? 0x84222325cbf29ce5ULL : 0x84222325cbf29ce4ULL;
         for (int k = 0; k < config_.dims; ++k)
         {
             const double cell = std::floor(o.p[k] / config_.observationBin);

@@ -213,6 +213,31 @@ namespace ropras::scenarios::test
         EXPECT_DOUBLE_EQ(r.next.p[0], -24.9);
     }
 
+    TEST(NavigationModel, TerminationEvidenceRulesOutGoalAndDangerParticles)
+    {
+        for (const bool evidence : {false, true})
+        {
+            const auto scenario = navScenario("maze2d", {{"slip", 0.0}, {"termination_evidence", evidence}});
+            const auto &model = *asNav(*scenario).parts().model;
+            pomdp::Rng rng(1);
+            const auto ended = model.step(at(18.75, 0.0), 0, rng);  // enters the goal
+            const auto wentOn = model.step(at(-20.0, 15.0), 0, rng);
+            ASSERT_TRUE(ended.terminal);
+            ASSERT_FALSE(wentOn.terminal);
+            EXPECT_EQ(ended.observation.ended, evidence);
+            EXPECT_FALSE(wentOn.observation.ended);
+            // "the episode went on" from a goal particle and a danger particle: impossible only with the evidence
+            const double inGoal = model.observationProbability(wentOn.observation, at(21.0, 0.0), 0);
+            const double inDanger = model.observationProbability(wentOn.observation, at(16.0, 8.0), 0);
+            const double free = model.observationProbability(wentOn.observation, at(-20.0, 0.0), 0);
+            EXPECT_EQ(inGoal, evidence ? 0.0 : 1.0);
+            EXPECT_EQ(inDanger, evidence ? 0.0 : 1.0);
+            EXPECT_EQ(free, 1.0);
+            EXPECT_EQ(model.observationProbability(ended.observation, at(21.0, 0.0), 0), 1.0);
+            EXPECT_EQ(model.observationKey(ended.observation) != model.observationKey(wentOn.observation), evidence);
+        }
+    }
+
     TEST(NavigationModel, InitialBelief)
     {
         const auto maze = navScenario("maze2d");

@@ -57,7 +57,10 @@ namespace ropras::scenarios
         double planResolution{0.1};       ///< motion-check resolution of the reference planner (m)
         double dangerMargin{0.0};         ///< the planner sees danger zones grown by this much per side (m)
         bool heuristicValue{false};       ///< leaf value from the goal distance field (NavigationModel::heuristicValue)
-        double plannerRange{2.0};         ///< VectorizedRRTConnect extension step (m)
+        /// the belief uses "the episode went on" as evidence (no particle stays in the goal or a danger zone);
+        /// false = the paper's observation space R^n u {None} only
+        bool terminationEvidence{false};
+        double plannerRange{2.0};                ///< VectorizedRRTConnect extension step (m)
         std::map<std::string, double> defaults;  ///< solver / filter parameter defaults
         nlohmann::json json;                     ///< the effective configuration
     };

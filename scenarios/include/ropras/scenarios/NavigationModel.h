@@ -21,6 +21,8 @@ namespace ropras::scenarios
     {
         double p[3]{0.0, 0.0, 0.0};
         bool seen{false};
+        /// with NavigationConfig::terminationEvidence: the step ended the episode (goal or danger zone)
+        bool ended{false};
     };
 
     /** \brief The POMDP model of the navigation scenarios (Light-Dark, Maze2D, Random3D): a sphere robot of
