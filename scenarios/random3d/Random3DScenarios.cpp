@@ -128,6 +128,14 @@ namespace ropras::scenarios::detail
             const double distance = readNumber(scenario, g, "start_goal_distance");
             const double clearance = readNumber(scenario, g, "clearance");
             const std::size_t maxAttempts = readCount(scenario, g, "max_attempts");
+            const double corridorFraction = readNumber(scenario, g, "corridor_fraction");
+            const double corridorRadius = readNumber(scenario, g, "corridor_radius");
+            if (!(corridorFraction >= 0.0 && corridorFraction <= 1.0) || !(corridorRadius > 0.0))
+            {
+                throw Error(
+                    "scenario " + scenario + ": generator.corridor_fraction = " + std::to_string(corridorFraction) +
+                    " must be in [0, 1] and generator.corridor_radius = " + std::to_string(corridorRadius) + " > 0");
+            }
             const double radius = readNumber(scenario, config, "robot_radius");
             const double bound = 25.0;
             if (!(goalHalf > 0.0) || !(startRange > 0.0) || startRange > bound - 2.0 || !(distance > 0.0) ||
@@ -180,7 +188,9 @@ namespace ropras::scenarios::detail
                     }
                     landmarks.push_back(boxAt(rng, c, landmarkHalf.first, landmarkHalf.second, bound));
                 }
-                // Obstacles and danger zones: uniform, rejected when near the start, the goal or a landmark centre.
+                // Obstacles and danger zones: a fraction corridor_fraction centred near the straight line from the
+                // start to the goal (within corridor_radius per axis), the others uniform; rejected when near the
+                // start, the goal or a landmark centre.
                 const auto acceptable = [&](const NavBox &b)
                 {
                     if (boxPointDistance(b, start) < clearance + radius || overlaps(b, goalBox, clearance))
@@ -201,7 +211,22 @@ namespace ropras::scenarios::detail
                     std::vector<NavBox> out;
                     for (std::size_t tries = 0; out.size() < count && tries < 100 * count + 100; ++tries)
                     {
-                        const NavBox b = boxAt(rng, uniformPoint(rng, bound), half.first, half.second, bound);
+                        std::array<double, 3> c{};
+                        if (rng.bernoulli(corridorFraction))
+                        {
+                            const double t = rng.uniform(0.1, 0.9);
+                            for (int k = 0; k < 3; ++k)
+                            {
+                                c[k] = std::clamp(
+                                    start[k] + t * (goal[k] - start[k]) + rng.uniform(-corridorRadius, corridorRadius),
+                                    -bound, bound);
+                            }
+                        }
+                        else
+                        {
+                            c = uniformPoint(rng, bound);
+                        }
+                        const NavBox b = boxAt(rng, c, half.first, half.second, bound);
                         if (acceptable(b))
                         {
                             out.push_back(b);

@@ -4,12 +4,15 @@
 #include <cmath>
 #include <iostream>
 
+#include "ExpectError.h"
 #include "NavigationTestUtil.h"
 #include "ropras/scenarios/NavigationPlanning.h"
 #include "ropras/scenarios/NavigationWorld.h"
 
 namespace ropras::scenarios::test
 {
+    using ropras::test::expectErrorMentions;
+
     namespace
     {
         /// exact distance from p to the nearest wall/obstacle box minus the radius (third computation)
@@ -329,6 +332,45 @@ namespace ropras::scenarios::test
         // another seed, another layout
         EXPECT_NE(navScenario("random3d-1", {{"generator", {{"seed", 77}}}})->scene(),
                   navScenario("random3d-1")->scene());
+    }
+
+    TEST(NavigationModel, Random3DCorridorPlacesBoxesAlongTheStartGoalLine)
+    {
+        // distance (max norm) from a point to the segment start + t (goal - start), t in [0.1, 0.9]
+        const auto corridorDistance = [](const std::array<double, 3> &p, const NavigationConfig &c)
+        {
+            const auto &a = c.starts[0];
+            const auto g = c.goal.center();
+            double best = 1e300;
+            for (int i = 0; i <= 800; ++i)
+            {
+                const double t = 0.1 + 0.8 * i / 800.0;
+                double d = 0.0;
+                for (int k = 0; k < 3; ++k)
+                    d = std::max(d, std::abs(p[k] - (a[k] + t * (g[k] - a[k]))));
+                best = std::min(best, d);
+            }
+            return best;
+        };
+        const auto countNear = [&](double fraction)
+        {
+            const auto scenario =
+                navScenario("random3d-2", {{"generator", {{"corridor_fraction", fraction}, {"corridor_radius", 3.0}}}});
+            const auto &c = asNav(*scenario).parts().model->config();
+            std::size_t near = 0;
+            for (const auto &b : c.obstacles)
+                near += corridorDistance(b.center(), c) <= 3.0 + 2.5 ? 1 : 0;  // + clamping into the bounds
+            return std::make_pair(near, c.obstacles.size());
+        };
+        const auto all = countNear(1.0);
+        EXPECT_EQ(all.first, all.second);  // every obstacle centred in the corridor
+        const auto none = countNear(0.0);
+        EXPECT_LT(none.first, none.second / 5);  // uniform placement: few near the line
+        expectErrorMentions(
+            [] {
+                navScenario("random3d-1", {{"generator", {{"corridor_fraction", 1.5}}}});
+            },
+            {"random3d-1", "corridor_fraction"});
     }
 
     TEST(NavigationModel, StaircaseMacroFollowsThePath)
