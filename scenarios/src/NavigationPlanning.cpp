@@ -72,8 +72,9 @@ namespace ropras::scenarios
     }
 
     NavigationPlanningAdapter::NavigationPlanningAdapter(std::shared_ptr<const NavigationModel> model,
-                                                         std::size_t macroLength)
-        : model_(std::move(model)), macroLength_(macroLength)
+                                                         std::size_t macroLength,
+                                                         std::shared_ptr<const ompl_ext::Environment> tight)
+        : model_(std::move(model)), macroLength_(macroLength), tight_(std::move(tight))
     {
         if (macroLength_ == 0)
         {
@@ -170,8 +171,33 @@ namespace ropras::scenarios
         return robot;
     }
 
-    std::shared_ptr<const ompl_ext::Environment> navigationEnvironment(const NavigationConfig &config)
+    std::shared_ptr<const ompl_ext::Environment> NavigationPlanningAdapter::environment(const NavState &particle) const
     {
+        const auto &c = model_->config();
+        if (!tight_ || !(c.dangerMargin > 0.0))
+        {
+            return nullptr;
+        }
+        const double grow = c.dangerMargin + c.robotRadius;
+        for (const auto &zone : c.dangerZones)
+        {
+            bool inside = true;
+            for (int k = 0; k < c.dims && inside; ++k)
+            {
+                inside = particle.p[k] >= zone.lo[k] - grow && particle.p[k] <= zone.hi[k] + grow;
+            }
+            if (inside)
+            {
+                return tight_;
+            }
+        }
+        return nullptr;
+    }
+
+    std::shared_ptr<const ompl_ext::Environment> navigationEnvironment(const NavigationConfig &config,
+                                                                       double dangerMargin)
+    {
+        const double margin = dangerMargin < 0.0 ? config.dangerMargin : dangerMargin;
         auto env = std::make_shared<ompl_ext::Environment>();
         const auto add = [&](const std::string &prefix, const std::vector<NavBox> &boxes, double margin)
         {
@@ -191,7 +217,7 @@ namespace ropras::scenarios
         add("wall", config.walls, 0.0);
         add("obstacle", config.obstacles, 0.0);
         // grown by danger_margin: reference paths keep that clearance from danger (the robot drifts)
-        add("danger", config.dangerZones, config.dangerMargin);
+        add("danger", config.dangerZones, margin);
         return env;
     }
 
@@ -202,6 +228,7 @@ namespace ropras::scenarios
         auto model = std::make_shared<const NavigationModel>(config);
         auto robot = loadNavigationRobot(config, folder);
         auto env = navigationEnvironment(config);
+        auto tight = config.dangerMargin > 0.0 ? navigationEnvironment(config, 0.0) : nullptr;
         auto space = std::make_shared<const NavigationTargetSpace>(model);
 
         ScenarioParts<NavigationModel> parts;
@@ -211,7 +238,7 @@ namespace ropras::scenarios
         const double planTime = config.referencePlanTime;
         const double resolution = config.planResolution;
         const double range = config.plannerRange;
-        parts.referencePolicy = [model, robot, env, space, planTime, resolution, range](
+        parts.referencePolicy = [model, robot, env, tight, space, planTime, resolution, range](
                                     const RunSettings &settings, const pomdp::ParameterMap &params,
                                     std::uint64_t seed) -> std::unique_ptr<pomdp::ReferencePolicy<NavigationModel>>
         {
@@ -223,7 +250,7 @@ namespace ropras::scenarios
                 planner.plannerParams["range"] = std::to_string(range);
             }
             const std::size_t macroLength = params.getCount("macro_length", 15);
-            auto adapter = std::make_shared<const NavigationPlanningAdapter>(model, macroLength);
+            auto adapter = std::make_shared<const NavigationPlanningAdapter>(model, macroLength, tight);
             return std::make_unique<pomdp::OmplReferencePolicy<NavigationModel, NavTarget>>(
                 adapter, std::move(heuristic), robot, env, planner);
         };

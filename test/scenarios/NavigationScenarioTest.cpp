@@ -6,6 +6,7 @@
 
 #include "ExpectError.h"
 #include "NavigationTestUtil.h"
+#include "ropras/scenarios/NavigationPlanning.h"
 
 namespace ropras::scenarios::test
 {
@@ -157,5 +158,43 @@ namespace ropras::scenarios::test
             EXPECT_TRUE(std::isfinite(a.discountedReturn)) << name;
             EXPECT_GT(a.search.simulations, 0u) << name;
         }
+    }
+}  // namespace ropras::scenarios::test
+
+namespace ropras::scenarios::test
+{
+    TEST(NavigationScenario, ParticlesInsideTheDangerMarginStillPlan)
+    {
+        // maze2d: danger zone [[-10, -10], [-2, -5]] grown by danger_margin 1.5 for the planner; (-6, -4) lies
+        // 1 m above the zone: invalid for the grown obstacles, so the adapter hands the planner the true zones
+        const auto scenario = navScenario("maze2d");
+        const auto &parts = asNav(*scenario).parts();
+        RunSettings settings;
+        settings.heuristic = "uniform";
+        pomdp::ParameterMap params;
+        auto policy = parts.referencePolicy(settings, params, 3);
+        auto *ompl = dynamic_cast<pomdp::OmplReferencePolicy<NavigationModel, NavTarget> *>(policy.get());
+        ASSERT_NE(ompl, nullptr);
+        const NavState nearDanger = at(-6.0, -4.0);
+        const NavState farAway = at(-20.0, 15.0);
+        pomdp::Rng rng(5);
+        std::size_t solved = 0;
+        for (int i = 0; i < 10; ++i)
+        {
+            std::vector<std::uint8_t> macro;
+            const bool ok = ompl->sample(nearDanger, pomdp::BeliefView<NavState>{&nearDanger, 1}, rng, macro);
+            EXPECT_NE(ompl->lastStatus(), pomdp::PathPlanStatus::InvalidStart);
+            solved += ok ? 1 : 0;
+        }
+        EXPECT_GE(solved, 5u);
+        // the base (grown) obstacles reject that start: the fallback is what makes it plan
+        const auto grown = navigationEnvironment(asNav(*scenario).parts().model->config());
+        const auto tight = navigationEnvironment(asNav(*scenario).parts().model->config(), 0.0);
+        EXPECT_LT(grown->signedDistance(Eigen::Vector3d(-6.0, -4.0, 0.0), 0.25), 0.0);
+        EXPECT_GT(tight->signedDistance(Eigen::Vector3d(-6.0, -4.0, 0.0), 0.25), 0.0);
+        // far from every danger zone the base obstacles are kept
+        NavigationPlanningAdapter adapter(parts.model, 15, tight);
+        EXPECT_EQ(adapter.environment(nearDanger), tight);
+        EXPECT_EQ(adapter.environment(farAway), nullptr);
     }
 }  // namespace ropras::scenarios::test

@@ -45,20 +45,28 @@ namespace ropras::scenarios
         target; PathToMacroAction = discretizeJointPath (step = the action length, at most macroLength
         points), then a staircase of axis actions: from the current lattice point, repeatedly the axis with
         the largest remaining difference to the next point while it exceeds half a step; at most
-        macroLength actions. */
+        macroLength actions.
+
+        Obstacles: the policy's base environment grows the danger zones by danger_margin; a particle that lies
+        inside that margin (not in the zone itself: that would have ended the episode) gets \a tight, the
+        environment with the danger zones at their true size, so it can still plan its way out instead of
+        failing with an invalid start. */
     class NavigationPlanningAdapter final : public pomdp::OmplPlanningAdapter<NavState, std::uint8_t, NavTarget>
     {
     public:
-        NavigationPlanningAdapter(std::shared_ptr<const NavigationModel> model, std::size_t macroLength);
+        NavigationPlanningAdapter(std::shared_ptr<const NavigationModel> model, std::size_t macroLength,
+                                  std::shared_ptr<const ompl_ext::Environment> tight = nullptr);
 
         void configuration(const NavState &state, double *q) const override;
         bool targetConfiguration(const NavState &start, const NavTarget &target, double *q) const override;
         bool pathToMacroAction(const NavState &start, const double *waypoints, std::size_t count,
                                std::vector<std::uint8_t> &out) const override;
+        std::shared_ptr<const ompl_ext::Environment> environment(const NavState &particle) const override;
 
     private:
         std::shared_ptr<const NavigationModel> model_;
         std::size_t macroLength_;
+        std::shared_ptr<const ompl_ext::Environment> tight_;
     };
 
     /** \brief The planner's robot: loads scenarios/<folder>/robot.urdf (embedded) and checks that its
@@ -67,9 +75,11 @@ namespace ropras::scenarios
     std::shared_ptr<const ompl_ext::RobotModel> loadNavigationRobot(const NavigationConfig &config,
                                                                     const std::string &folder);
 
-    /** \brief The planner's obstacles: walls, obstacles AND danger zones (grown by danger_margin per side) as
-        boxes, so reference paths keep clear of danger zones; 2-D boxes span z in [-1, 1]. */
-    std::shared_ptr<const ompl_ext::Environment> navigationEnvironment(const NavigationConfig &config);
+    /** \brief The planner's obstacles: walls, obstacles AND danger zones (grown by \a dangerMargin per side;
+        negative = the configuration's danger_margin) as boxes, so reference paths keep clear of danger
+        zones; 2-D boxes span z in [-1, 1]. */
+    std::shared_ptr<const ompl_ext::Environment> navigationEnvironment(const NavigationConfig &config,
+                                                                       double dangerMargin = -1.0);
 
     /** \brief The scenario \a name from its effective configuration \a json (parsed and validated here) and
         the robot of scenarios/<folder>/robot.urdf. */
