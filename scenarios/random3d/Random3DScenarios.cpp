@@ -26,17 +26,6 @@ namespace ropras::scenarios::detail
                                         {"random3d-3", 3, 300, 10},
                                         {"random3d-4", 4, 400, 5}};
 
-        double boxPointDistance(const NavBox &b, const std::array<double, 3> &p)
-        {
-            double d2 = 0.0;
-            for (int k = 0; k < 3; ++k)
-            {
-                const double e = std::max({0.0, b.lo[k] - p[k], p[k] - b.hi[k]});
-                d2 += e * e;
-            }
-            return std::sqrt(d2);
-        }
-
         bool overlaps(const NavBox &a, const NavBox &b, double margin)
         {
             for (int k = 0; k < 3; ++k)
@@ -193,13 +182,13 @@ namespace ropras::scenarios::detail
                 // start, the goal or a landmark centre.
                 const auto acceptable = [&](const NavBox &b)
                 {
-                    if (boxPointDistance(b, start) < clearance + radius || overlaps(b, goalBox, clearance))
+                    if (b.distance(start.data()) < clearance + radius || overlaps(b, goalBox, clearance))
                     {
                         return false;
                     }
                     for (const auto &l : landmarks)
                     {
-                        if (boxPointDistance(b, l.center()) < radius + 0.5)
+                        if (b.distance(l.center().data()) < radius + 0.5)
                         {
                             return false;
                         }

@@ -128,17 +128,6 @@ namespace ropras::scenarios
             const nlohmann::json &json_;
         };
 
-        double boxDistance(const NavBox &b, const std::array<double, 3> &p)
-        {
-            double d2 = 0.0;
-            for (int k = 0; k < 3; ++k)
-            {
-                const double e = std::max({0.0, b.lo[k] - p[k], p[k] - b.hi[k]});
-                d2 += e * e;
-            }
-            return std::sqrt(d2);
-        }
-
         std::string pointString(const std::array<double, 3> &p, int dims)
         {
             std::ostringstream s;
@@ -274,7 +263,7 @@ namespace ropras::scenarios
             {
                 for (const auto &b : *list)
                 {
-                    if (boxDistance(b, p) < c.robotRadius)
+                    if (b.distance(p.data()) < c.robotRadius)
                     {
                         r.fail(key, "= " + pointString(p, c.dims) + " is in collision (robot_radius " +
                                         std::to_string(c.robotRadius) + ") with the box " +

@@ -181,12 +181,7 @@ namespace ropras::scenarios
         const double grow = c.dangerMargin + c.robotRadius;
         for (const auto &zone : c.dangerZones)
         {
-            bool inside = true;
-            for (int k = 0; k < c.dims && inside; ++k)
-            {
-                inside = particle.p[k] >= zone.lo[k] - grow && particle.p[k] <= zone.hi[k] + grow;
-            }
-            if (inside)
+            if (zone.distance(particle.p) <= grow)
             {
                 return tight_;
             }

@@ -1,7 +1,9 @@
 #ifndef ROPRAS_SCENARIOS_NAVIGATION_CONFIG_H
 #define ROPRAS_SCENARIOS_NAVIGATION_CONFIG_H
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -24,6 +26,17 @@ namespace ropras::scenarios
         bool contains(const double *p) const noexcept
         {
             return p[0] >= lo[0] && p[0] <= hi[0] && p[1] >= lo[1] && p[1] <= hi[1] && p[2] >= lo[2] && p[2] <= hi[2];
+        }
+        /// Euclidean distance from the point to the box (0 inside)
+        double distance(const double *p) const noexcept
+        {
+            double d2 = 0.0;
+            for (int k = 0; k < 3; ++k)
+            {
+                const double e = std::max({0.0, lo[k] - p[k], p[k] - hi[k]});
+                d2 += e * e;
+            }
+            return std::sqrt(d2);
         }
     };
 
