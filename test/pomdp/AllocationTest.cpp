@@ -3,37 +3,15 @@
 // its result (the returned macro-action).
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <vector>
 
+#include "AllocationCounter.h"
 #include "ropras/pomdp/ModelRegistry.h"
 #include "ropras/pomdp/Tiger.h"
 
 namespace
 {
-    std::atomic<std::size_t> allocations{0};
-}
-
-void *operator new(std::size_t size)
-{
-    allocations.fetch_add(1, std::memory_order_relaxed);
-    if (void *p = std::malloc(size == 0 ? 1 : size))
-    {
-        return p;
-    }
-    throw std::bad_alloc();
-}
-
-void operator delete(void *p) noexcept
-{
-    std::free(p);
-}
-
-void operator delete(void *p, std::size_t) noexcept
-{
-    std::free(p);
+    const auto &allocations = ropras::test::allocationCount;
 }
 
 using namespace ropras::pomdp;
