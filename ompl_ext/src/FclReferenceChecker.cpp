@@ -332,6 +332,17 @@ namespace ropras::ompl_ext
                 }
             }
         }
+        /** \brief Poses the robot body of \a impl (FclSphereChecker::Impl or FclMeshChecker::Impl) at \a q in the
+            cached obstacle scene of \a env and returns \a query(body, scene), under the impl's mutex. */
+        template <class Impl, class Query>
+        auto posedQuery(const RobotModel &robot, Impl &impl, const Environment &env, const double *q,
+                        const Query &query)
+        {
+            std::lock_guard<std::mutex> lock(impl.mutex);
+            const ObstacleScene &scene = impl.cache.get(env);
+            impl.pose(robot, q);
+            return query(impl.body, scene);
+        }
     }  // namespace
 
     // ---------------------------------------------------------------------------------------------------------
@@ -379,30 +390,23 @@ namespace ropras::ompl_ext
 
     bool FclSphereChecker::isValid(const Environment &env, const double *q) const
     {
-        if (!robot_->withinBounds(q))
-            return false;
-        std::lock_guard<std::mutex> lock(impl_->mutex);
-        const ObstacleScene &scene = impl_->cache.get(env);
-        impl_->pose(*robot_, q);
-        return impl_->body.firstCollision(scene).empty();
+        return robot_->withinBounds(q) && posedQuery(*robot_, *impl_, env, q,
+                                                     [](const auto &body, const ObstacleScene &scene)
+                                                     { return body.firstCollision(scene).empty(); });
     }
 
     double FclSphereChecker::distance(const Environment &env, const double *q) const
     {
         requireFinite(*robot_, q, "FclSphereChecker::distance");
-        std::lock_guard<std::mutex> lock(impl_->mutex);
-        const ObstacleScene &scene = impl_->cache.get(env);
-        impl_->pose(*robot_, q);
-        return impl_->body.signedDistance(scene);
+        return posedQuery(*robot_, *impl_, env, q,
+                          [](const auto &body, const ObstacleScene &scene) { return body.signedDistance(scene); });
     }
 
     std::string FclSphereChecker::describeCollision(const Environment &env, const double *q) const
     {
         requireFinite(*robot_, q, "FclSphereChecker::describeCollision");
-        std::lock_guard<std::mutex> lock(impl_->mutex);
-        const ObstacleScene &scene = impl_->cache.get(env);
-        impl_->pose(*robot_, q);
-        return impl_->body.firstCollision(scene);
+        return posedQuery(*robot_, *impl_, env, q,
+                          [](const auto &body, const ObstacleScene &scene) { return body.firstCollision(scene); });
     }
 
     // ---------------------------------------------------------------------------------------------------------
@@ -510,29 +514,22 @@ namespace ropras::ompl_ext
 
     bool FclMeshChecker::isValid(const Environment &env, const double *q) const
     {
-        if (!robot_->withinBounds(q))
-            return false;
-        std::lock_guard<std::mutex> lock(impl_->mutex);
-        const ObstacleScene &scene = impl_->cache.get(env);
-        impl_->pose(*robot_, q);
-        return impl_->body.firstCollision(scene).empty();
+        return robot_->withinBounds(q) && posedQuery(*robot_, *impl_, env, q,
+                                                     [](const auto &body, const ObstacleScene &scene)
+                                                     { return body.firstCollision(scene).empty(); });
     }
 
     double FclMeshChecker::distance(const Environment &env, const double *q) const
     {
         requireFinite(*robot_, q, "FclMeshChecker::distance");
-        std::lock_guard<std::mutex> lock(impl_->mutex);
-        const ObstacleScene &scene = impl_->cache.get(env);
-        impl_->pose(*robot_, q);
-        return impl_->body.signedDistance(scene);
+        return posedQuery(*robot_, *impl_, env, q,
+                          [](const auto &body, const ObstacleScene &scene) { return body.signedDistance(scene); });
     }
 
     std::string FclMeshChecker::describeCollision(const Environment &env, const double *q) const
     {
         requireFinite(*robot_, q, "FclMeshChecker::describeCollision");
-        std::lock_guard<std::mutex> lock(impl_->mutex);
-        const ObstacleScene &scene = impl_->cache.get(env);
-        impl_->pose(*robot_, q);
-        return impl_->body.firstCollision(scene);
+        return posedQuery(*robot_, *impl_, env, q,
+                          [](const auto &body, const ObstacleScene &scene) { return body.firstCollision(scene); });
     }
 }  // namespace ropras::ompl_ext
