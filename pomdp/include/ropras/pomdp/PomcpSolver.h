@@ -128,7 +128,6 @@ namespace ropras::pomdp
             stats_.seconds = guard.elapsed();
             stats_.beliefNodes = beliefs_.size();
             stats_.actionNodes = actions_.size();
-            PlanResult<Action> result;
             std::uint32_t best = NONE;
             double bestQ = -std::numeric_limits<double>::infinity();
             for (std::uint32_t a = beliefs_[root].firstAction; a != NONE; a = actions_[a].nextSibling)
@@ -140,15 +139,7 @@ namespace ropras::pomdp
                 }
             }
             stats_.rootValue = best == NONE ? 0.0 : bestQ;
-            result.statistics = stats_;
-            if (best != NONE)
-            {
-                const auto &a = actions_[best];
-                result.action.assign(macroPool_.begin() + a.macroOffset,
-                                     macroPool_.begin() + a.macroOffset + a.macroLength);
-                result.valid = true;
-            }
-            return result;
+            return detail::planResultOf(stats_, macroPool_, best == NONE ? nullptr : &actions_[best]);
         }
 
         /** \brief Root children after the last plan(): (Q, N) pairs. */
@@ -314,7 +305,7 @@ namespace ropras::pomdp
             {
                 return rollout(s, depth, rng);
             }
-            const MacroView<Action> macro{macroPool_.data() + actions_[a].macroOffset, actions_[a].macroLength};
+            const auto macro = detail::macroOf(macroPool_, actions_[a]);
             const auto step = detail::executeMacroCounted(*model_, s, macro, rng, settings_.profile, stats_);
             double r = step.reward;
             if (!step.terminal)

@@ -130,17 +130,8 @@ namespace ropras::pomdp
             stats_.beliefNodes = beliefs_.size();
             stats_.actionNodes = actions_.size();
             stats_.rootValue = beliefs_[root].value;
-            PlanResult<Action> result;
-            result.statistics = stats_;
             const std::uint32_t best = selectRootAction(rng);
-            if (best != NONE)
-            {
-                const auto &a = actions_[best];
-                result.action.assign(macroPool_.begin() + a.macroOffset,
-                                     macroPool_.begin() + a.macroOffset + a.macroLength);
-                result.valid = true;
-            }
-            return result;
+            return detail::planResultOf(stats_, macroPool_, best == NONE ? nullptr : &actions_[best]);
         }
 
         /** \brief Root children after the last plan(): (Q, N) pairs, for tests and diagnostics. */
@@ -308,7 +299,7 @@ namespace ropras::pomdp
             {
                 return rollout(s, rng);
             }
-            const MacroView<Action> macro{macroPool_.data() + actions_[a].macroOffset, actions_[a].macroLength};
+            const auto macro = detail::macroOf(macroPool_, actions_[a]);
             const auto step = detail::executeMacroCounted(*model_, s, macro, rng, settings_.profile, stats_);
             double r = step.reward;
             if (!step.terminal)

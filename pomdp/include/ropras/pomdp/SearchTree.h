@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 #include "ropras/pomdp/MacroAction.h"
 #include "ropras/pomdp/SearchStatistics.h"
@@ -11,6 +12,29 @@
 namespace ropras::pomdp::detail
 {
     /** \brief Pieces shared by the tree-search solvers (ROP-RAS3, POMCP, R-POMCP). */
+
+    /// the macro-action of an action node (fields macroOffset, macroLength) kept in the solver's flat pool
+    template <class Action, class ActionNode>
+    inline MacroView<Action> macroOf(const std::vector<Action> &pool, const ActionNode &node) noexcept
+    {
+        return MacroView<Action>{pool.data() + node.macroOffset, node.macroLength};
+    }
+
+    /// the result of a planning call: \a statistics and, when \a best is non-null, its macro-action (valid)
+    template <class Action, class ActionNode>
+    inline PlanResult<Action> planResultOf(const SearchStatistics &statistics, const std::vector<Action> &pool,
+                                           const ActionNode *best)
+    {
+        PlanResult<Action> result;
+        result.statistics = statistics;
+        if (best)
+        {
+            const auto macro = macroOf(pool, *best);
+            result.action.assign(macro.begin(), macro.end());
+            result.valid = true;
+        }
+        return result;
+    }
 
     /// executeMacro, counting model steps and, when \a profile, the time spent in the model
     template <class M>
