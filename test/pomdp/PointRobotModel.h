@@ -49,10 +49,6 @@ namespace ropras::pomdp::test
         using Observation = std::uint8_t;
 
         static constexpr double RADIUS = 0.03;
-        /// the collision checker computes in float: paths that graze an obstacle (asymptotically optimal
-        /// planners hug them) may come within ~1e-7 of contact; the model, like the FCL cross-checks, counts
-        /// contact only deeper than this tolerance
-        static constexpr double CONTACT_TOLERANCE = 1e-6;
         static constexpr double STEP = 0.05;
         static constexpr double GOAL_RADIUS = 0.06;
         static constexpr double SENSE_RADIUS = 0.08;
@@ -73,8 +69,7 @@ namespace ropras::pomdp::test
                 const double ey = std::max(0.0, std::abs(y - cy) - hy);
                 return std::sqrt(ex * ex + ey * ey);
             };
-            return boxDistance(0.5, 0.25) < RADIUS - CONTACT_TOLERANCE ||
-                   boxDistance(doorY(door), 0.125) < RADIUS - CONTACT_TOLERANCE;
+            return boxDistance(0.5, 0.25) < RADIUS || boxDistance(doorY(door), 0.125) < RADIUS;
         }
 
         StepResult<State, Observation> step(const State &s, const Action &a, Rng &rng) const noexcept
