@@ -136,13 +136,21 @@ namespace ropras::pomdp::test
         }
     };
 
-    /** \brief The robot of PointRobotModel as URDF: joints x, y (prismatic, [0, 1]) and one sphere. */
-    inline std::shared_ptr<const ompl_ext::RobotModel> pointRobot()
+    /** \brief Radius of the planning sphere: the disc padded by the motion-check resolution. A motion the
+        checker validates at samples POINT_RESOLUTION apart (max-norm, so at most POINT_RESOLUTION * sqrt(2) / 2
+        from any point of the segment) is then collision-free everywhere for the true disc, as PointRobotModel's
+        exact check sees it; without the pad a path may graze an obstacle between two samples. */
+    constexpr double PLANNING_RADIUS = PointRobotModel::RADIUS + POINT_RESOLUTION;
+
+    /** \brief The robot of PointRobotModel as URDF: joints x, y (prismatic, [0, 1]) and one sphere of
+        \a radius (the planning radius by default, PointRobotModel::RADIUS for the exact disc). */
+    inline std::shared_ptr<const ompl_ext::RobotModel> pointRobot(double radius = PLANNING_RADIUS)
     {
         const std::string urdf = R"(<robot name="point2d">
   <link name="world"/>
   <link name="slider"/>
-  <link name="body"><collision><geometry><sphere radius="0.03"/></geometry></collision></link>
+  <link name="body"><collision><geometry><sphere radius=")" +
+                                 std::to_string(radius) + R"("/></geometry></collision></link>
   <joint name="x" type="prismatic"><parent link="world"/><child link="slider"/><axis xyz="1 0 0"/>
     <limit lower="0" upper="1" effort="1" velocity="1"/></joint>
   <joint name="y" type="prismatic"><parent link="slider"/><child link="body"/><axis xyz="0 1 0"/>
