@@ -20,6 +20,9 @@ namespace ropras::ompl_ext
         using simd::KinematicProgram;
         using simd::WIDTH;
 
+        /// offset rotation entries within this of 0 or +-1 make a signed permutation (folded in the batch path)
+        constexpr double PERMUTATION_TOLERANCE = 1e-9;
+
         /// collision links with more than WIDTH spheres become program links of at most this many spheres
         constexpr std::size_t SUB_LINK_SPHERES = 6;
 
@@ -30,6 +33,22 @@ namespace ropras::ompl_ext
             if (buffer.size() < floats)
                 buffer.resize(floats);
             return buffer.data();
+        }
+
+        /** \brief Obstacles whose boxes isValidBatch computes once per call (on the stack); more: per batch, on the
+            fly. isMotionValid keeps computing them per batch: an invalid motion often stops at the first obstacle
+            of its first batch, where computing every box up front would cost more than it saves. */
+        constexpr std::size_t CALL_BOXES = 64;
+
+        /** \brief The obstacle boxes of \a env into \a store, once per call; nullptr (collideBatch then computes them
+            per batch) when the environment has more than CALL_BOXES obstacles. */
+        template <class K>
+        const simd::ObstacleBox *callBoxes(const Environment &env, simd::ObstacleBox *store) noexcept
+        {
+            if (K::obstacleCount(env) > CALL_BOXES)
+                return nullptr;
+            K::obstacleBoxes(env, store);
+            return store;
         }
 
         std::size_t roundUp(std::size_t n)
@@ -81,11 +100,29 @@ namespace ropras::ompl_ext
                 return K::validSingle(p, env, q, threadScratch(p.single.total));
             }
 
+            /** \brief WIDTH rows straight into the batch q block (AVX2: row loads, conversion and an 8 x 8
+                transpose in registers), limits compared in double. False when some row is non-finite or out of its
+                limits, or some angle needs the double reduction (|q| >= 64), or dof > WIDTH: the caller then takes
+                the row-by-row path. */
+            static bool loadRows(const KinematicProgram &p, const double *rows, float *qBlock) noexcept
+            {
+                if (p.dof > WIDTH || !V::loadRows(rows, p.dof, p.lowerCheck.data(), p.upperCheck.data(), qBlock))
+                    return false;
+                for (int j = 0; j < p.dof; ++j)
+                    if (p.rotational[static_cast<std::size_t>(j)] &&
+                        cmpGe(abs(V::load(qBlock + WIDTH * j)), V::broadcast(64.0f)).any())
+                        return false;
+                return true;
+            }
+
             static std::size_t isValidBatch(const KinematicProgram &p, const Environment &env, const double *qs,
                                             std::size_t count, bool *valid) noexcept
             {
                 const auto dof = static_cast<std::size_t>(p.dof);
                 float *buf = threadScratch(std::max(p.batch.total, p.single.total));
+                // the obstacle boxes once per call, not once per batch
+                simd::ObstacleBox store[CALL_BOXES];
+                const simd::ObstacleBox *boxes = callBoxes<K>(env, store);
                 std::size_t nValid = 0;
                 for (std::size_t start = 0; start < count; start += WIDTH)
                 {
@@ -95,6 +132,19 @@ namespace ropras::ompl_ext
                         const double *q = qs + start * dof;
                         valid[start] = withinLimits(p, q) && K::validSingle(p, env, q, buf);
                         nValid += valid[start] ? 1 : 0;
+                        continue;
+                    }
+                    if (n == WIDTH && loadRows(p, qs + start * dof, buf + p.batch.q))
+                    {
+                        // every row finite, within its limits and with angles in the float range: no fix-ups
+                        K::framesBatch(p, buf);
+                        constexpr unsigned all = (1u << WIDTH) - 1u;
+                        const unsigned ok = all & ~K::collideBatch(p, env, buf, all, false, boxes);
+                        for (std::size_t i = 0; i < n; ++i)
+                        {
+                            valid[start + i] = ((ok >> i) & 1u) != 0u;
+                            nValid += valid[start + i] ? 1 : 0;
+                        }
                         continue;
                     }
                     unsigned active = 0u;
@@ -120,7 +170,7 @@ namespace ropras::ompl_ext
                         putLane(p, qs + row * dof, i, buf + p.batch.q);
                     }
                     K::framesBatch(p, buf);
-                    const unsigned ok = active & ~K::collideBatch(p, env, buf, active, false);
+                    const unsigned ok = active & ~K::collideBatch(p, env, buf, active, false, boxes);
                     for (std::size_t i = 0; i < n; ++i)
                     {
                         valid[start + i] = ((ok >> i) & 1u) != 0u;
@@ -325,6 +375,13 @@ namespace ropras::ompl_ext
             p.upper[j] = joint.upper;
             p.unbounded[j] = joint.type == JointType::Continuous ? 1 : 0;
         }
+        // the same test as withinLimits as one pair of comparisons (NaN and infinities fail both forms)
+        const double big = std::numeric_limits<double>::max();
+        for (std::size_t j = 0; j < model.dof(); ++j)
+        {
+            p.lowerCheck.push_back(p.unbounded[j] ? -big : std::max(p.lower[j], -big));
+            p.upperCheck.push_back(p.unbounded[j] ? big : std::min(p.upper[j], big));
+        }
 
         const auto &frames = model.frames();
         p.frames.resize(frames.size());
@@ -349,12 +406,11 @@ namespace ropras::ompl_ext
             else if (frame.variable >= 0 && frame.motion == JointMotion::TranslateZ)
                 op.motion = simd::Motion::TranslateZ;
             toFloat12(frame.offset, op.offset);
-            for (int i = 0; i < 3; ++i)
-            {
-                for (int j = 0; j < 3; ++j)
-                    op.offsetRows[4 * i + j] = static_cast<float>(frame.offset.linear()(i, j));
-                op.offsetRows[4 * i + 3] = static_cast<float>(frame.offset.translation()(i));
-            }
+            for (int j = 0; j < 4; ++j)
+                for (int i = 0; i < 4; ++i)
+                    op.offsetColumns[4 * j + i] = i == 3 ? 0.0f
+                                                         : static_cast<float>(j < 3 ? frame.offset.linear()(i, j)
+                                                                                    : frame.offset.translation()(i));
             // fold signed-permutation rotations and zero translation components
             op.permutation = true;
             for (int j = 0; j < 3 && op.permutation; ++j)
@@ -363,18 +419,34 @@ namespace ropras::ompl_ext
                 for (int i = 0; i < 3; ++i)
                 {
                     const double v = frame.offset.linear()(i, j);
-                    if (std::abs(v) > 1e-12)
+                    // URDFs write pi/2 with ~11 digits (cos = 5e-12): entries below 1e-9 are zero, far below
+                    // float resolution (the float offset holds them as noise under 1e-9 of the other terms)
+                    if (std::abs(v) > PERMUTATION_TOLERANCE)
                     {
                         ++nonZero;
                         op.perm[j] = i;
                         op.sign[j] = v > 0.0 ? 1.0f : -1.0f;
-                        if (std::abs(std::abs(v) - 1.0) > 1e-12)
+                        if (std::abs(std::abs(v) - 1.0) > PERMUTATION_TOLERANCE)
                             op.permutation = false;
                     }
                 }
                 if (nonZero != 1)
                     op.permutation = false;
             }
+            if (op.permutation)
+            {
+                op.permId = -1;
+                for (int k = 0; k < 6; ++k)
+                    if (simd::PERMUTATIONS[k][0] == op.perm[0] && simd::PERMUTATIONS[k][1] == op.perm[1] &&
+                        simd::PERMUTATIONS[k][2] == op.perm[2])
+                        op.permId = k;
+                if (op.permId < 0)  // two columns from the same source: not a permutation after all
+                    op.permutation = false;
+                for (int j = 0; j < 3; ++j)
+                    op.signMask[j] = op.sign[j] < 0.0f ? -0.0f : 0.0f;
+            }
+            if (!op.permutation)
+                op.permId = 0;
             op.translationMask = 0u;
             for (int k = 0; k < 3; ++k)
                 if (frame.offset.translation()(k) != 0.0)
@@ -469,6 +541,15 @@ namespace ropras::ompl_ext
                 p.links.push_back(op);
             }
         }
+        // links grouped by frame, for the batch frame loop (bounds placed while the frame is in registers)
+        for (std::size_t f = 0; f < p.frames.size(); ++f)
+        {
+            p.frames[f].linkBegin = static_cast<int>(p.frameLinks.size());
+            for (std::size_t l = 0; l < p.links.size(); ++l)
+                if (p.links[l].frame == static_cast<int>(f))
+                    p.frameLinks.push_back(static_cast<int>(l));
+            p.frames[f].linkEnd = static_cast<int>(p.frameLinks.size());
+        }
         for (std::size_t s = 0; s < spheres.size(); ++s)
             if (p.programIndexOfSphere[s] < 0)
                 throw Error("CollisionChecker: robot '" + model.name() + "' sphere " + std::to_string(s) +
@@ -488,6 +569,74 @@ namespace ropras::ompl_ext
                 for (const int b : linkIndex[static_cast<std::size_t>(pair.second)])
                     p.selfPairs.emplace_back(a, b);
         }
+
+        // link groups: consecutive links, a new group once the current one has `size` links and the frame
+        // changes (at most MAX_LINK_GROUPS: every group but the last has at least `size` links)
+        const std::size_t nProgramLinks = p.links.size();
+        const std::size_t size = std::max<std::size_t>(
+            {2, (nProgramLinks + 3) / 4, (nProgramLinks + simd::MAX_LINK_GROUPS - 2) / (simd::MAX_LINK_GROUPS - 1)});
+        std::vector<int> groupOf(nProgramLinks, 0);
+        for (std::size_t l = 0; l < nProgramLinks; ++l)
+        {
+            if (p.groups.empty() || (static_cast<std::size_t>(p.groups.back().end - p.groups.back().begin) >= size &&
+                                     p.links[l].frame != p.links[l - 1].frame))
+                p.groups.push_back({static_cast<int>(l), static_cast<int>(l)});
+            p.groups.back().end = static_cast<int>(l) + 1;
+            groupOf[l] = static_cast<int>(p.groups.size()) - 1;
+        }
+        p.groupOfLink = groupOf;
+        // self pairs sorted by the groups of their links; one range per group pair
+        std::stable_sort(p.selfPairs.begin(), p.selfPairs.end(),
+                         [&](const std::pair<int, int> &x, const std::pair<int, int> &y)
+                         {
+                             const auto gx = std::make_pair(groupOf[static_cast<std::size_t>(x.first)],
+                                                            groupOf[static_cast<std::size_t>(x.second)]);
+                             const auto gy = std::make_pair(groupOf[static_cast<std::size_t>(y.first)],
+                                                            groupOf[static_cast<std::size_t>(y.second)]);
+                             return gx < gy;
+                         });
+        for (std::size_t k = 0; k < p.selfPairs.size(); ++k)
+        {
+            const int ga = groupOf[static_cast<std::size_t>(p.selfPairs[k].first)];
+            const int gb = groupOf[static_cast<std::size_t>(p.selfPairs[k].second)];
+            if (p.selfPairRanges.empty() || p.selfPairRanges.back().groupA != ga ||
+                p.selfPairRanges.back().groupB != gb)
+                p.selfPairRanges.push_back({ga, gb, static_cast<int>(k), static_cast<int>(k)});
+            p.selfPairRanges.back().end = static_cast<int>(k) + 1;
+        }
+
+        // rows: within a range, consecutive pairs (a, b), (a, b + 1), ... (at most WIDTH)
+        for (simd::SelfPairRange &range : p.selfPairRanges)
+        {
+            range.rowBegin = static_cast<int>(p.selfPairRows.size());
+            for (int k = range.begin; k < range.end; ++k)
+            {
+                const auto &pair = p.selfPairs[static_cast<std::size_t>(k)];
+                if (static_cast<int>(p.selfPairRows.size()) > range.rowBegin)
+                {
+                    simd::SelfPairRow &row = p.selfPairRows.back();
+                    if (row.a == pair.first && row.bFirst + row.count == pair.second && row.count < WIDTH)
+                    {
+                        ++row.count;
+                        continue;
+                    }
+                }
+                p.selfPairRows.push_back({pair.first, pair.second, 1, k});
+            }
+            range.rowEnd = static_cast<int>(p.selfPairRows.size());
+        }
+        for (const simd::SelfPairRow &row : p.selfPairRows)
+            for (int i = 0; i < WIDTH; ++i)
+            {
+                float reach2 = -1.0f;
+                if (i < row.count)
+                {
+                    const float rs = p.links[static_cast<std::size_t>(row.a)].br +
+                                     p.links[static_cast<std::size_t>(row.bFirst + i)].br;
+                    reach2 = rs * rs;
+                }
+                p.selfRowReach2.push_back(reach2);
+            }
 
         for (const auto &pair : p.selfPairs)
         {
@@ -511,13 +660,15 @@ namespace ropras::ompl_ext
         p.single.sin = take(dofPad);
         p.single.cos = take(dofPad);
         p.single.q = take(dofPad);
-        p.single.frames = take(12 * nFrames);
+        p.single.frames = take(16 * nFrames);
         p.single.sx = take(nSpheres);
         p.single.sy = take(nSpheres);
         p.single.sz = take(nSpheres);
-        p.single.lx = take(static_cast<std::size_t>(p.linkPadded));
-        p.single.ly = take(static_cast<std::size_t>(p.linkPadded));
-        p.single.lz = take(static_cast<std::size_t>(p.linkPadded));
+        // link bounds padded: the self-pair rows load WIDTH links from any link, and framesSingle writes the
+        // padding [links, links + 2 WIDTH) with two vector stores
+        p.single.lx = take(static_cast<std::size_t>(p.linkPadded + 2 * WIDTH));
+        p.single.ly = take(static_cast<std::size_t>(p.linkPadded + 2 * WIDTH));
+        p.single.lz = take(static_cast<std::size_t>(p.linkPadded + 2 * WIDTH));
         p.single.total = at;
         at = 0;
         p.batch.sin = take(WIDTH * model.dof());

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <limits>
 #include <random>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -647,4 +648,98 @@ TEST(CollisionCheckerTest, EveryJointTypeMatchesReferenceFk)
         q[1] = 0.41;
         EXPECT_FALSE(checker.isValid(Environment(), q.data()));
     }
+}
+
+namespace
+{
+    /** \brief Rows of a batch in every form the batch loader distinguishes: in range, exactly at a limit (valid),
+        one ulp past it, NaN, infinite, and continuous angles far from zero (reduced in double). Every verdict of
+        isValidBatch must equal isValid on the same row, for both backends and any row count. */
+    void checkBatchRows(const std::shared_ptr<const RobotModel> &robot, const Environment &env, std::uint64_t seed)
+    {
+        const std::size_t dof = robot->dof();
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        const double inf = std::numeric_limits<double>::infinity();
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        std::vector<double> qs;
+        const std::size_t count = 8 * 300 + 5;  // full batches, then a tail
+        for (std::size_t k = 0; k < count; ++k)
+        {
+            std::vector<double> q(dof);
+            for (std::size_t j = 0; j < dof; ++j)
+            {
+                const PlanningJoint &joint = robot->joints()[j];
+                const bool continuous = joint.type == JointType::Continuous;
+                const double lo = continuous ? -3.0 : joint.lower, hi = continuous ? 3.0 : joint.upper;
+                q[j] = lo + (hi - lo) * u(rng);
+                // one row in four of the batches gets a special value in one joint
+                if (k % 4 != 1 || j != (k / 4) % dof)
+                    continue;
+                switch ((k / 4 / dof) % 6)
+                {
+                    case 0:
+                        q[j] = continuous ? 200.0 * (u(rng) - 0.5) : lo;  // at the limit: valid
+                        break;
+                    case 1:
+                        q[j] = continuous ? 1e4 * (u(rng) - 0.5) : hi;
+                        break;
+                    case 2:
+                        q[j] = continuous ? 1e6 : std::nextafter(hi, inf);  // one ulp past the limit
+                        break;
+                    case 3:
+                        q[j] = continuous ? -1e6 : std::nextafter(lo, -inf);
+                        break;
+                    case 4:
+                        q[j] = nan;
+                        break;
+                    default:
+                        q[j] = (k % 8 < 4) ? inf : -inf;
+                        break;
+                }
+            }
+            qs.insert(qs.end(), q.begin(), q.end());
+        }
+        for (SimdBackend b : backends())
+        {
+            const CollisionChecker checker(robot, b);
+            for (const std::size_t n : {count, std::size_t{8}, std::size_t{13}})
+            {
+                std::unique_ptr<bool[]> v(new bool[n]);
+                const std::size_t nValid = checker.isValidBatch(env, qs.data(), n, v.get());
+                std::size_t valid = 0, invalid = 0;
+                for (std::size_t k = 0; k < n; ++k)
+                {
+                    const bool single = checker.isValid(env, qs.data() + k * dof);
+                    EXPECT_EQ(v[k], single) << robot->name() << " " << simdBackendName(b) << " row " << k;
+                    (single ? valid : invalid) += 1;
+                }
+                EXPECT_EQ(nValid, valid);
+                if (n == count)
+                {
+                    EXPECT_GT(valid, count / 20) << robot->name();
+                    EXPECT_GT(invalid, count / 20) << robot->name();
+                }
+            }
+        }
+    }
+}  // namespace
+
+TEST(CollisionCheckerTest, BatchRowsMatchSingleChecksAtLimitsAndBadValues)
+{
+    // three joints (the AVX2 loader's short-row path), a continuous one among them
+    const auto small = RobotModel::fromUrdfString(ALL_JOINTS_URDF, ".", "all_joints.urdf");
+    Environment env;
+    env.addSphere("ball", {0.25, 0.2, 0.25}, 0.12);
+    checkBatchRows(small, env, 1001);
+    if (!std::filesystem::exists(SHARED + "/robots"))
+        GTEST_SKIP() << "../shared not found: " << SHARED << " (the Panda part is skipped)";
+    checkBatchRows(loadRobot("panda"), clutter(1002), 1003);
+    // more obstacles than a call keeps boxes for on the stack: the boxes are computed per batch instead
+    Environment crowded = clutter(1004);
+    std::mt19937_64 rng(1005);
+    std::uniform_real_distribution<double> u(-0.8, 0.8);
+    for (int k = 0; k < 80; ++k)
+        crowded.addSphere("ball" + std::to_string(k), {u(rng), u(rng), 0.4 + 0.5 * u(rng)}, 0.03);
+    checkBatchRows(loadRobot("panda"), crowded, 1006);
 }

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <random>
 
 #include "../../ompl_ext/src/simd/Avx2Vec.h"
@@ -294,3 +296,102 @@ TEST(SimdTest, ObstacleCullingBoxesAreConservative)
     EXPECT_GT(total.culled, 50000);
     EXPECT_GT(total.kept, 5000);
 }
+
+namespace
+{
+    /// loadRows of backend V: out[8 j + i] == (float) rows[dof i + j] bit for bit, true iff every value is within
+    /// [lo_j, hi_j] (limits included, NaN and infinities outside), for every row length 1..8
+    template <class V>
+    void checkLoadRows(std::uint32_t seed)
+    {
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<double> u(-4.0, 4.0);
+        const double nan = std::nan(""), inf = std::numeric_limits<double>::infinity();
+        int inside = 0, outside = 0;
+        for (int k = 0; k < 4000; ++k)
+        {
+            const int dof = 1 + k % 8;
+            double lo[8], hi[8], rows[64];
+            for (int j = 0; j < dof; ++j)
+            {
+                lo[j] = -3.0 + 0.1 * u(rng);
+                hi[j] = 3.0 + 0.1 * u(rng);
+            }
+            bool expected = true;
+            for (int n = 0; n < 8 * dof; ++n)
+            {
+                const int j = n % dof;
+                double x = 0.7 * u(rng);
+                switch ((k / 8 + n) % 23)
+                {
+                    case 0:
+                        x = (k % 3 == 0) ? lo[j] : hi[j];  // the limits themselves are inside
+                        break;
+                    case 1:
+                        if (k % 5 == 0)
+                            x = (k % 2 == 0) ? std::nextafter(hi[j], inf) : std::nextafter(lo[j], -inf);
+                        break;
+                    case 2:
+                        if (k % 11 == 0)
+                            x = (k % 2 == 0) ? nan : -inf;
+                        break;
+                    default:
+                        break;
+                }
+                rows[n] = x;
+                expected = expected && x >= lo[j] && x <= hi[j];
+            }
+            float out[64];
+            for (float &o : out)
+                o = -1234.0f;
+            const bool ok = V::loadRows(rows, dof, lo, hi, out);
+            EXPECT_EQ(ok, expected) << V::name() << " dof " << dof << " k " << k;
+            (ok ? inside : outside) += 1;
+            for (int i = 0; i < 8; ++i)
+                for (int j = 0; j < dof; ++j)
+                {
+                    const float want = static_cast<float>(rows[dof * i + j]);
+                    const float got = out[8 * j + i];
+                    if (std::isnan(want))
+                        EXPECT_TRUE(std::isnan(got)) << V::name() << " dof " << dof << " row " << i << " joint " << j;
+                    else
+                        EXPECT_EQ(got, want) << V::name() << " dof " << dof << " row " << i << " joint " << j;
+                }
+            for (int n = 8 * dof; n < 64; ++n)
+                EXPECT_EQ(out[n], -1234.0f) << V::name() << ": wrote past dof columns";
+        }
+        EXPECT_GT(inside, 400);
+        EXPECT_GT(outside, 400);
+    }
+}  // namespace
+
+TEST(SimdTest, ScalarLoadRowsTransposesAndChecksLimits)
+{
+    checkLoadRows<ScalarVec>(21);
+}
+
+#ifdef ROPRAS_SIMD_HAVE_AVX2
+TEST(SimdTest, Avx2LoadRowsAndFlipSignMatchScalarBackend)
+{
+    using ropras::ompl_ext::simd::Avx2Vec;
+    checkLoadRows<Avx2Vec>(21);
+    std::mt19937 rng(22);
+    std::uniform_real_distribution<float> u(-5.0f, 5.0f);
+    for (int k = 0; k < 1000; ++k)
+    {
+        float a[8], s[8], fs[8], fa[8];
+        for (int i = 0; i < 8; ++i)
+        {
+            a[i] = u(rng);
+            s[i] = ((k >> i) & 1) != 0 ? -0.0f : 0.0f;
+        }
+        flipSign(ScalarVec::load(a), ScalarVec::load(s)).store(fs);
+        flipSign(Avx2Vec::load(a), Avx2Vec::load(s)).store(fa);
+        for (int i = 0; i < 8; ++i)
+        {
+            EXPECT_EQ(fs[i], std::signbit(s[i]) ? -a[i] : a[i]);
+            EXPECT_EQ(fa[i], fs[i]);
+        }
+    }
+}
+#endif

@@ -6,6 +6,8 @@
 #define ROPRAS_SIMD_HAVE_AVX2 1
 #include <immintrin.h>
 
+#include <cstddef>
+
 namespace ropras::ompl_ext::simd
 {
     /** \brief Lane mask of the AVX2 backend: all bits set in a lane that is true. */
@@ -96,6 +98,50 @@ namespace ropras::ompl_ext::simd
         friend Avx2Vec floor(const Avx2Vec &a) noexcept
         {
             return {_mm256_round_ps(a.v, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC)};
+        }
+        /// a with its sign flipped in the lanes where \a s is -0.0f (s holds +0.0f or -0.0f: an XOR of sign bits)
+        friend Avx2Vec flipSign(const Avx2Vec &a, const Avx2Vec &s) noexcept { return {_mm256_xor_ps(a.v, s.v)}; }
+        /** \brief WIDTH rows of \a dof <= 8 doubles (row-major, consecutive) into \a out as dof vectors of WIDTH
+            floats (out[8 j + i] = rows[dof i + j]): each row loaded and converted in two halves (masked, never past
+            the row), then an 8 x 8 transpose in registers. True when every value satisfies lo[j] <= v <= hi[j]
+            (NaN fails). */
+        static bool loadRows(const double *rows, int dof, const double *lo, const double *hi, float *out) noexcept
+        {
+            const __m256i lanes = _mm256_setr_epi64x(0, 1, 2, 3);
+            const __m256i m0 = _mm256_cmpgt_epi64(_mm256_set1_epi64x(dof), lanes);
+            const __m256i m1 = _mm256_cmpgt_epi64(_mm256_set1_epi64x(dof - 4), lanes);
+            const __m256d zero = _mm256_setzero_pd();
+            const __m256d lo0 = _mm256_maskload_pd(lo, m0), lo1 = dof > 4 ? _mm256_maskload_pd(lo + 4, m1) : zero;
+            const __m256d hi0 = _mm256_maskload_pd(hi, m0), hi1 = dof > 4 ? _mm256_maskload_pd(hi + 4, m1) : zero;
+            __m256d ok0 = _mm256_castsi256_pd(_mm256_set1_epi64x(-1)), ok1 = ok0;
+            __m256 r[8];
+            for (int i = 0; i < 8; ++i)
+            {
+                // masked lanes read 0.0, and 0 <= 0 <= 0 with the masked limits: they always pass
+                const __m256d a = _mm256_maskload_pd(rows + dof * i, m0);
+                const __m256d b = dof > 4 ? _mm256_maskload_pd(rows + dof * i + 4, m1) : _mm256_setzero_pd();
+                ok0 = _mm256_and_pd(
+                    ok0, _mm256_and_pd(_mm256_cmp_pd(a, lo0, _CMP_GE_OQ), _mm256_cmp_pd(a, hi0, _CMP_LE_OQ)));
+                ok1 = _mm256_and_pd(
+                    ok1, _mm256_and_pd(_mm256_cmp_pd(b, lo1, _CMP_GE_OQ), _mm256_cmp_pd(b, hi1, _CMP_LE_OQ)));
+                r[i] = _mm256_set_m128(_mm256_cvtpd_ps(b), _mm256_cvtpd_ps(a));
+            }
+            // 8 x 8 transpose: rows i -> columns j
+            const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
+            const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
+            const __m256 t4 = _mm256_unpacklo_ps(r[4], r[5]), t5 = _mm256_unpackhi_ps(r[4], r[5]);
+            const __m256 t6 = _mm256_unpacklo_ps(r[6], r[7]), t7 = _mm256_unpackhi_ps(r[6], r[7]);
+            const __m256 u0 = _mm256_shuffle_ps(t0, t2, 0x44), u1 = _mm256_shuffle_ps(t0, t2, 0xEE);
+            const __m256 u2 = _mm256_shuffle_ps(t1, t3, 0x44), u3 = _mm256_shuffle_ps(t1, t3, 0xEE);
+            const __m256 u4 = _mm256_shuffle_ps(t4, t6, 0x44), u5 = _mm256_shuffle_ps(t4, t6, 0xEE);
+            const __m256 u6 = _mm256_shuffle_ps(t5, t7, 0x44), u7 = _mm256_shuffle_ps(t5, t7, 0xEE);
+            const __m256 c[8] = {_mm256_permute2f128_ps(u0, u4, 0x20), _mm256_permute2f128_ps(u1, u5, 0x20),
+                                 _mm256_permute2f128_ps(u2, u6, 0x20), _mm256_permute2f128_ps(u3, u7, 0x20),
+                                 _mm256_permute2f128_ps(u0, u4, 0x31), _mm256_permute2f128_ps(u1, u5, 0x31),
+                                 _mm256_permute2f128_ps(u2, u6, 0x31), _mm256_permute2f128_ps(u3, u7, 0x31)};
+            for (int j = 0; j < dof; ++j)
+                _mm256_storeu_ps(out + 8 * j, c[j]);
+            return _mm256_movemask_pd(_mm256_and_pd(ok0, ok1)) == 0xF;
         }
         friend Avx2Vec select(const Avx2Mask &m, const Avx2Vec &a, const Avx2Vec &b) noexcept
         {

@@ -158,6 +158,12 @@ namespace ropras::ompl_ext::simd
         std::memcpy(p, &r, sizeof(r));
     }
 
+    /// world boxes (x, y, z, unused) of the link groups (LinkGroup) of one configuration
+    struct GroupBoxesSingle
+    {
+        Row4 lo[MAX_LINK_GROUPS], hi[MAX_LINK_GROUPS];
+    };
+
     /// links whose spheres are placed (bit per link); models with more than 64 links place all at once
     struct Placed
     {
@@ -238,8 +244,10 @@ namespace ropras::ompl_ext::simd
 
         // ------------------------------------------------------------ single configuration
 
-        /// scalar FK into buf: frames and world link bounds. q must be finite. Spheres: placeLink / placeAll.
-        static void framesSingle(const KinematicProgram &p, const double *q, float *buf) noexcept
+        /** \brief Scalar FK into buf: frames and world link bounds, and the link group boxes into \a groups when
+            given. q must be finite. Spheres: placeLink / placeAll. */
+        static void framesSingle(const KinematicProgram &p, const double *q, float *buf,
+                                 GroupBoxesSingle *groups = nullptr) noexcept
         {
             const ScratchLayout &l = p.single;
             float *sn = buf + l.sin, *cs = buf + l.cos, *qf = buf + l.q;
@@ -258,55 +266,81 @@ namespace ropras::ompl_ext::simd
                 s.store(sn + j);  // the regions are padded to a multiple of WIDTH
                 c.store(cs + j);
             }
-            // frames as three 4-float rows (r0 r1 r2 t): row_i(P * O) = sum_k P_ik O_row_k + (0, 0, 0, P_i3)
+            // frames as four 4-float columns (c0 c1 c2 t, w = 0): column j of P * O is sum_k P.c_k O_kj, the
+            // translation sum_k P.c_k O_k3 + P.t; a frame whose parent is the previous frame stays in registers,
+            // and its link bounds are placed from the registers (R b + t: three FMAs per link)
             float *t = buf + l.frames;
-            const Row4 e3 = {0.0f, 0.0f, 0.0f, 1.0f};
-            for (std::size_t f = 0; f < p.frames.size(); ++f)
+            float *lx = buf + l.lx, *ly = buf + l.ly, *lz = buf + l.lz;
+            Row4 pc[4] = {};
+            GroupBoxesSingle scratchGroups;
+            GroupBoxesSingle &g = groups != nullptr ? *groups : scratchGroups;
+            const Row4 far = {1e30f, 1e30f, 1e30f, 1e30f};
+            for (std::size_t gi = 0; gi < p.groups.size(); ++gi)
             {
-                const FrameOp &op = p.frames[f];
-                float *tf = t + 12 * f;
-                Row4 r[3];
-                const Row4 o0 = loadRow(op.offsetRows), o1 = loadRow(op.offsetRows + 4),
-                           o2 = loadRow(op.offsetRows + 8);
+                g.lo[gi] = far;
+                g.hi[gi] = -far;
+            }
+            // the program's arrays in locals: the stores below may alias anything (members would be reloaded)
+            const FrameOp *frames = p.frames.data();
+            const LinkOp *links = p.links.data();
+            const int *frameLinks = p.frameLinks.data(), *groupOfLink = p.groupOfLink.data();
+            const int nFrames = static_cast<int>(p.frames.size());
+            for (int f = 0; f < nFrames; ++f)
+            {
+                const FrameOp &op = frames[f];
+                const float *o = op.offset;
+                Row4 c[4];
                 if (op.parent < 0)
                 {
-                    r[0] = o0;
-                    r[1] = o1;
-                    r[2] = o2;
+                    for (int j = 0; j < 4; ++j)
+                        c[j] = loadRow(op.offsetColumns + 4 * j);
                 }
                 else
                 {
-                    const float *a = t + 12 * op.parent;
-                    for (int i = 0; i < 3; ++i)
-                        r[i] = a[4 * i] * o0 + a[4 * i + 1] * o1 + a[4 * i + 2] * o2 + a[4 * i + 3] * e3;
+                    if (op.parent != f - 1)
+                        for (int j = 0; j < 4; ++j)
+                            pc[j] = loadRow(t + 16 * op.parent + 4 * j);
+                    for (int j = 0; j < 3; ++j)
+                        c[j] = pc[0] * o[j] + pc[1] * o[3 + j] + pc[2] * o[6 + j];
+                    c[3] = pc[0] * o[9] + pc[1] * o[10] + pc[2] * o[11] + pc[3];
                 }
                 if (op.motion == Motion::RotateZ)
                 {
-                    const float c = cs[op.variable], s = sn[op.variable];
-                    const Row4 cc = {c, c, 1.0f, 1.0f}, ss = {s, -s, 0.0f, 0.0f};
-                    for (int i = 0; i < 3; ++i)
-                        r[i] = r[i] * cc + __builtin_shufflevector(r[i], r[i], 1, 0, 2, 3) * ss;
+                    const float cv = cs[op.variable], sv = sn[op.variable];
+                    const Row4 a = c[0], b = c[1];
+                    c[0] = a * cv + b * sv;
+                    c[1] = b * cv - a * sv;
                 }
                 else if (op.motion == Motion::TranslateZ)
+                    c[3] += c[2] * qf[op.variable];
+                for (int j = 0; j < 4; ++j)
                 {
-                    const float d = qf[op.variable];
-                    for (int i = 0; i < 3; ++i)
-                        r[i][3] += d * r[i][2];
+                    storeRow(t + 16 * f + 4 * j, c[j]);
+                    pc[j] = c[j];
                 }
-                for (int i = 0; i < 3; ++i)
-                    storeRow(tf + 4 * i, r[i]);
+                for (int k = op.linkBegin; k < op.linkEnd; ++k)
+                {
+                    const int li = frameLinks[k];
+                    const LinkOp &link = links[li];
+                    const Row4 w = c[0] * link.bx + c[1] * link.by + c[2] * link.bz + c[3];
+                    lx[li] = w[0];
+                    ly[li] = w[1];
+                    lz[li] = w[2];
+                    const int gi = groupOfLink[li];
+                    const Row4 lo = w - link.br, hi = w + link.br;
+                    g.lo[gi] = g.lo[gi] < lo ? g.lo[gi] : lo;
+                    g.hi[gi] = g.hi[gi] > hi ? g.hi[gi] : hi;
+                }
             }
-            float *lx = buf + l.lx, *ly = buf + l.ly, *lz = buf + l.lz;
-            for (std::size_t li = 0; li < p.links.size(); ++li)
+            // padding (one more WIDTH past linkPadded for the self-pair rows): never near anything; the padded
+            // range [links, linkPadded + WIDTH) is shorter than 2 WIDTH
+            const V pad = V::broadcast(1e18f);
+            const int nLinks = static_cast<int>(p.links.size());
+            for (float *a : {lx, ly, lz})
             {
-                const LinkOp &link = p.links[li];
-                const float *m = t + 12 * link.frame;
-                lx[li] = m[0] * link.bx + m[1] * link.by + m[2] * link.bz + m[3];
-                ly[li] = m[4] * link.bx + m[5] * link.by + m[6] * link.bz + m[7];
-                lz[li] = m[8] * link.bx + m[9] * link.by + m[10] * link.bz + m[11];
+                pad.store(a + nLinks);
+                pad.store(a + nLinks + WIDTH);
             }
-            for (int li = static_cast<int>(p.links.size()); li < p.linkPadded; ++li)
-                lx[li] = ly[li] = lz[li] = 1e18f;  // never near anything
         }
 
         /// world centres of one link's spheres (whole padded block)
@@ -314,11 +348,11 @@ namespace ropras::ompl_ext::simd
         {
             const ScratchLayout &l = p.single;
             const LinkOp &link = p.links[static_cast<std::size_t>(li)];
-            const float *m = buf + l.frames + 12 * link.frame;  // rows (r0 r1 r2 t)
-            const V r00 = V::broadcast(m[0]), r01 = V::broadcast(m[1]), r02 = V::broadcast(m[2]);
-            const V r10 = V::broadcast(m[4]), r11 = V::broadcast(m[5]), r12 = V::broadcast(m[6]);
-            const V r20 = V::broadcast(m[8]), r21 = V::broadcast(m[9]), r22 = V::broadcast(m[10]);
-            const V tx = V::broadcast(m[3]), ty = V::broadcast(m[7]), tz = V::broadcast(m[11]);
+            const float *m = buf + l.frames + 16 * link.frame;  // columns (c0 c1 c2 t), 4 floats each
+            const V r00 = V::broadcast(m[0]), r01 = V::broadcast(m[4]), r02 = V::broadcast(m[8]);
+            const V r10 = V::broadcast(m[1]), r11 = V::broadcast(m[5]), r12 = V::broadcast(m[9]);
+            const V r20 = V::broadcast(m[2]), r21 = V::broadcast(m[6]), r22 = V::broadcast(m[10]);
+            const V tx = V::broadcast(m[12]), ty = V::broadcast(m[13]), tz = V::broadcast(m[14]);
             for (int s = link.first; s < link.first + link.padded; s += WIDTH)
             {
                 const V x = V::load(p.sx.data() + s), y = V::load(p.sy.data() + s), z = V::load(p.sz.data() + s);
@@ -374,21 +408,16 @@ namespace ropras::ompl_ext::simd
             return false;
         }
 
-        static Aabb aabbSingle(const KinematicProgram &p, const float *buf) noexcept
+        /// the box around every link bound, from the group boxes
+        static Aabb aabbSingle(const KinematicProgram &p, const GroupBoxesSingle &g) noexcept
         {
-            const ScratchLayout &l = p.single;
-            Aabb box{{1e30f, 1e30f, 1e30f}, {-1e30f, -1e30f, -1e30f}};
-            for (std::size_t li = 0; li < p.links.size(); ++li)
+            Row4 lo = g.lo[0], hi = g.hi[0];
+            for (std::size_t gi = 1; gi < p.groups.size(); ++gi)
             {
-                const float r = p.links[li].br;
-                const float c[3] = {buf[l.lx + li], buf[l.ly + li], buf[l.lz + li]};
-                for (int i = 0; i < 3; ++i)
-                {
-                    box.lo[i] = std::min(box.lo[i], c[i] - r);
-                    box.hi[i] = std::max(box.hi[i], c[i] + r);
-                }
+                lo = lo < g.lo[gi] ? lo : g.lo[gi];
+                hi = hi > g.hi[gi] ? hi : g.hi[gi];
             }
-            return box;
+            return Aabb{{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
         }
 
         static bool overlaps(const Aabb &a, const ObstacleBox &b) noexcept
@@ -406,9 +435,9 @@ namespace ropras::ompl_ext::simd
             return overlaps(box, ob) && obstacleSingle(p, buf, placed, ob, exact);
         }
 
-        static bool envSingle(const KinematicProgram &p, const Environment &env, float *buf, Placed &placed) noexcept
+        static bool envSingle(const KinematicProgram &p, const Environment &env, float *buf, Placed &placed,
+                              const Aabb &box) noexcept
         {
-            const Aabb box = aabbSingle(p, buf);
             const auto anyHit = [&](const auto &obstacles)
             {
                 for (const auto &o : obstacles)
@@ -436,42 +465,68 @@ namespace ropras::ompl_ext::simd
             return false;
         }
 
-        static bool selfSingle(const KinematicProgram &p, float *buf, Placed &placed) noexcept
+        static bool selfSingle(const KinematicProgram &p, float *buf, Placed &placed,
+                               const GroupBoxesSingle &g) noexcept
+        {
+            const ScratchLayout &l = p.single;
+            const float *lx = buf + l.lx, *ly = buf + l.ly, *lz = buf + l.lz;
+            for (const SelfPairRange &range : p.selfPairRanges)
+            {
+                // no pair of the range touches when the boxes of the two groups are apart
+                const int ga = range.groupA, gb = range.groupB;
+                if (g.lo[ga][0] > g.hi[gb][0] || g.lo[gb][0] > g.hi[ga][0] || g.lo[ga][1] > g.hi[gb][1] ||
+                    g.lo[gb][1] > g.hi[ga][1] || g.lo[ga][2] > g.hi[gb][2] || g.lo[gb][2] > g.hi[ga][2])
+                    continue;
+                // the link bounds of up to WIDTH pairs (one link against consecutive links) per vector
+                for (int row = range.rowBegin; row < range.rowEnd; ++row)
+                {
+                    const SelfPairRow &r = p.selfPairRows[static_cast<std::size_t>(row)];
+                    const V dx = V::load(lx + r.bFirst) - V::broadcast(lx[r.a]);
+                    const V dy = V::load(ly + r.bFirst) - V::broadcast(ly[r.a]);
+                    const V dz = V::load(lz + r.bFirst) - V::broadcast(lz[r.a]);
+                    unsigned bits = cmpLe(fma(dx, dx, fma(dy, dy, dz * dz)),
+                                          V::load(p.selfRowReach2.data() + static_cast<std::size_t>(WIDTH) * row))
+                                        .bits();
+                    while (bits != 0u)
+                    {
+                        const int k = r.pairBegin + __builtin_ctz(bits);
+                        bits &= bits - 1u;
+                        if (selfPairSingle(p, buf, placed, k))
+                            return true;
+                    }
+                }
+            }
+            return false;
+        }
+
+        /// the spheres of self pair k (whose bounds touch)
+        static bool selfPairSingle(const KinematicProgram &p, float *buf, Placed &placed, int k) noexcept
         {
             const ScratchLayout &l = p.single;
             const float *wx = buf + l.sx, *wy = buf + l.sy, *wz = buf + l.sz;
             const float *lx = buf + l.lx, *ly = buf + l.ly, *lz = buf + l.lz;
-            for (const auto &pair : p.selfPairs)
+            const auto &pair = p.selfPairs[static_cast<std::size_t>(k)];
+            const LinkOp &a = p.links[static_cast<std::size_t>(pair.first)];
+            const LinkOp &b = p.links[static_cast<std::size_t>(pair.second)];
+            ensure(p, buf, placed, pair.first);
+            ensure(p, buf, placed, pair.second);
+            // spheres of a that reach b's bounding sphere, then those against b's spheres
+            for (int c = a.first; c < a.first + a.padded; c += WIDTH)
             {
-                const LinkOp &a = p.links[static_cast<std::size_t>(pair.first)];
-                const LinkOp &b = p.links[static_cast<std::size_t>(pair.second)];
-                const float dx = lx[pair.first] - lx[pair.second];
-                const float dy = ly[pair.first] - ly[pair.second];
-                const float dz = lz[pair.first] - lz[pair.second];
-                const float rr = a.br + b.br;
-                if (dx * dx + dy * dy + dz * dz > rr * rr)
-                    continue;
-                ensure(p, buf, placed, pair.first);
-                ensure(p, buf, placed, pair.second);
-                // spheres of a that reach b's bounding sphere, then those against b's spheres
-                for (int c = a.first; c < a.first + a.padded; c += WIDTH)
+                unsigned near = boundTest(V::load(wx + c), V::load(wy + c), V::load(wz + c), V::load(p.sr.data() + c),
+                                          lx[pair.second], ly[pair.second], lz[pair.second], b.br)
+                                    .bits() &
+                                Mask::firstLanes(a.first + a.count - c).bits();
+                while (near != 0u)
                 {
-                    unsigned near =
-                        boundTest(V::load(wx + c), V::load(wy + c), V::load(wz + c), V::load(p.sr.data() + c),
-                                  lx[pair.second], ly[pair.second], lz[pair.second], b.br)
-                            .bits() &
-                        Mask::firstLanes(a.first + a.count - c).bits();
-                    while (near != 0u)
-                    {
-                        const int i = c + __builtin_ctz(near);
-                        near &= near - 1u;
-                        const float ri = p.sr[static_cast<std::size_t>(i)];
-                        for (int s = b.first; s < b.first + b.padded; s += WIDTH)
-                            if (boundTest(V::load(wx + s), V::load(wy + s), V::load(wz + s), V::load(p.sr.data() + s),
-                                          wx[i], wy[i], wz[i], ri)
-                                    .any())
-                                return true;
-                    }
+                    const int i = c + __builtin_ctz(near);
+                    near &= near - 1u;
+                    const float ri = p.sr[static_cast<std::size_t>(i)];
+                    for (int s = b.first; s < b.first + b.padded; s += WIDTH)
+                        if (boundTest(V::load(wx + s), V::load(wy + s), V::load(wz + s), V::load(p.sr.data() + s),
+                                      wx[i], wy[i], wz[i], ri)
+                                .any())
+                            return true;
                 }
             }
             return false;
@@ -480,17 +535,34 @@ namespace ropras::ompl_ext::simd
         /// q within bounds and finite
         static bool validSingle(const KinematicProgram &p, const Environment &env, const double *q, float *buf) noexcept
         {
-            framesSingle(p, q, buf);
+            GroupBoxesSingle groups;
+            framesSingle(p, q, buf, &groups);
             Placed placed;
             if (p.links.size() > 64)
                 placeAll(p, buf, placed);
-            return !envSingle(p, env, buf, placed) && !selfSingle(p, buf, placed);
+            const Aabb box = aabbSingle(p, groups);
+            return !envSingle(p, env, buf, placed, box) && !selfSingle(p, buf, placed, groups);
         }
 
         // ------------------------------------------------------------ batch: one configuration per lane
 
-        /// FK of WIDTH configurations: per variable joint values in buf + batch.q (WIDTH floats each,
-        /// angles already reduced); writes frames and link bounds (WIDTH floats each). Spheres: placeLinkBatch.
+        /// m = rotation columns of P picked by the permutation C0 C1 C2, with the frame's sign flips
+        template <int C0, int C1, int C2>
+        static void permuteColumns(const V *pm, const V *sg, V *m) noexcept
+        {
+            for (int i = 0; i < 3; ++i)
+            {
+                m[3 * i] = flipSign(pm[3 * i + C0], sg[0]);
+                m[3 * i + 1] = flipSign(pm[3 * i + C1], sg[1]);
+                m[3 * i + 2] = flipSign(pm[3 * i + C2], sg[2]);
+            }
+        }
+
+        /** \brief FK of WIDTH configurations: per variable joint values in buf + batch.q (WIDTH floats each,
+            angles already reduced); writes frames and link bounds (WIDTH floats each). Spheres: placeLinkBatch.
+            The chain stays in registers (a frame whose parent is the previous frame does not reload it); offsets
+            that are signed permutations are pre-decoded (column moves and sign-bit XORs, no branch per
+            element); each frame's link bounds are placed while it is in registers. */
         static void framesBatch(const KinematicProgram &p, float *buf) noexcept
         {
             const ScratchLayout &l = p.batch;
@@ -504,9 +576,17 @@ namespace ropras::ompl_ext::simd
                     c.store(buf + l.cos + W * j);
                 }
             float *t = buf + l.frames;
-            for (std::size_t f = 0; f < p.frames.size(); ++f)
+            float *lx = buf + l.lx, *ly = buf + l.ly, *lz = buf + l.lz;
+            // the program's arrays in locals: the stores below may alias anything (members would be reloaded)
+            const LinkOp *links = p.links.data();
+            const int *frameLinks = p.frameLinks.data();
+            V pm[12];  // the previous frame (frame 0 has no parent: never read before it is set)
+            for (V &v : pm)
+                v = V::zero();
+            const int nFrames = static_cast<int>(p.frames.size());
+            for (int f = 0; f < nFrames; ++f)
             {
-                const FrameOp &op = p.frames[f];
+                const FrameOp &op = p.frames[static_cast<std::size_t>(f)];
                 float *tf = t + 12 * W * f;
                 V m[12];
                 if (op.parent < 0)
@@ -514,38 +594,52 @@ namespace ropras::ompl_ext::simd
                     for (int i = 0; i < 12; ++i)
                         m[i] = V::broadcast(op.offset[i]);
                 }
-                else if (op.permutation)
-                {
-                    const float *pt = t + 12 * W * op.parent;
-                    for (int i = 0; i < 3; ++i)
-                    {
-                        V ti = V::load(pt + W * (9 + i));
-                        for (int k = 0; k < 3; ++k)
-                            if ((op.translationMask >> k) & 1u)
-                                ti = fma(V::load(pt + W * (3 * i + k)), V::broadcast(op.offset[9 + k]), ti);
-                        m[9 + i] = ti;
-                        for (int j = 0; j < 3; ++j)
-                        {
-                            const V src = V::load(pt + W * (3 * i + op.perm[j]));
-                            m[3 * i + j] = op.sign[j] > 0.0f ? src : V::zero() - src;
-                        }
-                    }
-                }
                 else
                 {
-                    const float *pt = t + 12 * W * op.parent;
-                    const float *o = op.offset;
-                    for (int i = 0; i < 3; ++i)
+                    if (op.parent != f - 1)
                     {
-                        const V a0 = V::load(pt + W * (3 * i)), a1 = V::load(pt + W * (3 * i + 1)),
-                                a2 = V::load(pt + W * (3 * i + 2)), a3 = V::load(pt + W * (9 + i));
-                        m[3 * i] = fma(a0, V::broadcast(o[0]), fma(a1, V::broadcast(o[3]), a2 * V::broadcast(o[6])));
-                        m[3 * i + 1] =
-                            fma(a0, V::broadcast(o[1]), fma(a1, V::broadcast(o[4]), a2 * V::broadcast(o[7])));
-                        m[3 * i + 2] =
-                            fma(a0, V::broadcast(o[2]), fma(a1, V::broadcast(o[5]), a2 * V::broadcast(o[8])));
-                        m[9 + i] =
-                            fma(a0, V::broadcast(o[9]), fma(a1, V::broadcast(o[10]), fma(a2, V::broadcast(o[11]), a3)));
+                        const float *pt = t + 12 * W * op.parent;
+                        for (int i = 0; i < 12; ++i)
+                            pm[i] = V::load(pt + W * i);
+                    }
+                    const float *o = op.offset;
+                    const V o9 = V::broadcast(o[9]), o10 = V::broadcast(o[10]), o11 = V::broadcast(o[11]);
+                    for (int i = 0; i < 3; ++i)
+                        m[9 + i] = fma(pm[3 * i], o9, fma(pm[3 * i + 1], o10, fma(pm[3 * i + 2], o11, pm[9 + i])));
+                    if (op.permutation)
+                    {
+                        const V sg[3] = {V::broadcast(op.signMask[0]), V::broadcast(op.signMask[1]),
+                                         V::broadcast(op.signMask[2])};
+                        switch (op.permId)
+                        {
+                            case 0:
+                                permuteColumns<0, 1, 2>(pm, sg, m);
+                                break;
+                            case 1:
+                                permuteColumns<0, 2, 1>(pm, sg, m);
+                                break;
+                            case 2:
+                                permuteColumns<1, 0, 2>(pm, sg, m);
+                                break;
+                            case 3:
+                                permuteColumns<1, 2, 0>(pm, sg, m);
+                                break;
+                            case 4:
+                                permuteColumns<2, 0, 1>(pm, sg, m);
+                                break;
+                            default:
+                                permuteColumns<2, 1, 0>(pm, sg, m);
+                                break;
+                        }
+                    }
+                    else
+                    {
+                        for (int j = 0; j < 3; ++j)
+                        {
+                            const V c0 = V::broadcast(o[j]), c1 = V::broadcast(o[3 + j]), c2 = V::broadcast(o[6 + j]);
+                            for (int i = 0; i < 3; ++i)
+                                m[3 * i + j] = fma(pm[3 * i], c0, fma(pm[3 * i + 1], c1, pm[3 * i + 2] * c2));
+                        }
                     }
                 }
                 if (op.motion == Motion::RotateZ)
@@ -565,22 +659,19 @@ namespace ropras::ompl_ext::simd
                         m[9 + i] = fma(d, m[3 * i + 2], m[9 + i]);
                 }
                 for (int i = 0; i < 12; ++i)
+                {
                     m[i].store(tf + W * i);
-            }
-            for (std::size_t li = 0; li < p.links.size(); ++li)
-            {
-                const LinkOp &link = p.links[li];
-                const float *pt = t + 12 * W * link.frame;
-                const V vx = V::broadcast(link.bx), vy = V::broadcast(link.by), vz = V::broadcast(link.bz);
-                for (int i = 0; i < 3; ++i)
-                    fma(V::load(pt + W * (3 * i)), vx,
-                        fma(V::load(pt + W * (3 * i + 1)), vy,
-                            fma(V::load(pt + W * (3 * i + 2)), vz, V::load(pt + W * (9 + i)))))
-                        .store(buf +
-                               (i == 0   ? l.lx
-                                : i == 1 ? l.ly
-                                         : l.lz) +
-                               W * li);
+                    pm[i] = m[i];
+                }
+                for (int k = op.linkBegin; k < op.linkEnd; ++k)
+                {
+                    const int li = frameLinks[k];
+                    const LinkOp &link = links[li];
+                    const V vx = V::broadcast(link.bx), vy = V::broadcast(link.by), vz = V::broadcast(link.bz);
+                    fma(m[0], vx, fma(m[1], vy, fma(m[2], vz, m[9]))).store(lx + W * li);
+                    fma(m[3], vx, fma(m[4], vy, fma(m[5], vz, m[10]))).store(ly + W * li);
+                    fma(m[6], vx, fma(m[7], vy, fma(m[8], vz, m[11]))).store(lz + W * li);
+                }
             }
         }
 
@@ -594,13 +685,17 @@ namespace ropras::ompl_ext::simd
             V m[12];
             for (int i = 0; i < 12; ++i)
                 m[i] = V::load(pt + W * i);
-            for (int s = link.first; s < link.first + link.count; ++s)
+            // everything the loop reads through p in locals: vector stores may alias anything, so members read
+            // in the loop would be reloaded after every store
+            const float *px = p.sx.data(), *py = p.sy.data(), *pz = p.sz.data();
+            float *wx = buf + l.sx, *wy = buf + l.sy, *wz = buf + l.sz;
+            const int first = link.first, end = link.first + link.count;
+            for (int s = first; s < end; ++s)
             {
-                const auto k = static_cast<std::size_t>(s);
-                const V vx = V::broadcast(p.sx[k]), vy = V::broadcast(p.sy[k]), vz = V::broadcast(p.sz[k]);
-                fma(m[0], vx, fma(m[1], vy, fma(m[2], vz, m[9]))).store(buf + l.sx + W * s);
-                fma(m[3], vx, fma(m[4], vy, fma(m[5], vz, m[10]))).store(buf + l.sy + W * s);
-                fma(m[6], vx, fma(m[7], vy, fma(m[8], vz, m[11]))).store(buf + l.sz + W * s);
+                const V vx = V::broadcast(px[s]), vy = V::broadcast(py[s]), vz = V::broadcast(pz[s]);
+                fma(m[0], vx, fma(m[1], vy, fma(m[2], vz, m[9]))).store(wx + W * s);
+                fma(m[3], vx, fma(m[4], vy, fma(m[5], vz, m[10]))).store(wy + W * s);
+                fma(m[6], vx, fma(m[7], vy, fma(m[8], vz, m[11]))).store(wz + W * s);
             }
         }
 
@@ -652,8 +747,15 @@ namespace ropras::ompl_ext::simd
             return hit & near;
         }
 
-        /// the box around every link bound of the \a active lanes
-        static Aabb aabbBatch(const KinematicProgram &p, const float *buf, unsigned active) noexcept
+        /// per-lane axis-aligned boxes around the link bounds of each link group (LinkGroup), WIDTH lanes each
+        struct GroupBoxes
+        {
+            V lo[MAX_LINK_GROUPS][3], hi[MAX_LINK_GROUPS][3];
+        };
+
+        /// the group boxes of every lane, and the box around every link bound of the \a active lanes
+        static Aabb groupBoxesBatch(const KinematicProgram &p, const float *buf, unsigned active,
+                                    GroupBoxes &g) noexcept
         {
             const ScratchLayout &l = p.batch;
             constexpr int W = WIDTH;
@@ -661,14 +763,26 @@ namespace ropras::ompl_ext::simd
             const V far = V::broadcast(1e30f), nfar = V::broadcast(-1e30f);
             V lo[3] = {far, far, far}, hi[3] = {nfar, nfar, nfar};
             const std::size_t offsets[3] = {l.lx, l.ly, l.lz};
-            for (std::size_t li = 0; li < p.links.size(); ++li)
+            for (std::size_t gi = 0; gi < p.groups.size(); ++gi)
             {
-                const V r = V::broadcast(p.links[li].br);
+                const LinkGroup &grp = p.groups[gi];
+                V glo[3] = {far, far, far}, ghi[3] = {nfar, nfar, nfar};
+                for (int li = grp.begin; li < grp.end; ++li)
+                {
+                    const V r = V::broadcast(p.links[static_cast<std::size_t>(li)].br);
+                    for (int i = 0; i < 3; ++i)
+                    {
+                        const V c = V::load(buf + offsets[i] + W * li);
+                        glo[i] = min(glo[i], c - r);
+                        ghi[i] = max(ghi[i], c + r);
+                    }
+                }
                 for (int i = 0; i < 3; ++i)
                 {
-                    const V c = V::load(buf + offsets[i] + W * li);
-                    lo[i] = min(lo[i], select(lanes, c - r, far));
-                    hi[i] = max(hi[i], select(lanes, c + r, nfar));
+                    g.lo[gi][i] = glo[i];
+                    g.hi[gi][i] = ghi[i];
+                    lo[i] = min(lo[i], select(lanes, glo[i], far));
+                    hi[i] = max(hi[i], select(lanes, ghi[i], nfar));
                 }
             }
             Aabb box;
@@ -683,130 +797,191 @@ namespace ropras::ompl_ext::simd
             return box;
         }
 
+        /// lanes whose group box overlaps the obstacle box
+        static unsigned groupTouches(const GroupBoxes &g, int gi, const ObstacleBox &b) noexcept
+        {
+            const Mask x =
+                cmpLe(g.lo[gi][0], V::broadcast(b.cx + b.ex)) & cmpGe(g.hi[gi][0], V::broadcast(b.cx - b.ex));
+            const Mask y =
+                cmpLe(g.lo[gi][1], V::broadcast(b.cy + b.ey)) & cmpGe(g.hi[gi][1], V::broadcast(b.cy - b.ey));
+            const Mask z =
+                cmpLe(g.lo[gi][2], V::broadcast(b.cz + b.ez)) & cmpGe(g.hi[gi][2], V::broadcast(b.cz - b.ez));
+            return (x & y & z).bits();
+        }
+
+        /// lanes where the boxes of groups a and b overlap
+        static unsigned groupsOverlap(const GroupBoxes &g, int a, int b) noexcept
+        {
+            Mask m = cmpLe(g.lo[a][0], g.hi[b][0]) & cmpLe(g.lo[b][0], g.hi[a][0]);
+            for (int i = 1; i < 3; ++i)
+                m = m & cmpLe(g.lo[a][i], g.hi[b][i]) & cmpLe(g.lo[b][i], g.hi[a][i]);
+            return m.bits();
+        }
+
         /// lanes of \a lanes where some self-collision pair touches
-        static unsigned selfBatch(const KinematicProgram &p, float *buf, Placed &placed, unsigned lanes,
-                                  bool stopOnAny) noexcept
+        static unsigned selfBatch(const KinematicProgram &p, float *buf, Placed &placed, const GroupBoxes &g,
+                                  unsigned lanes, bool stopOnAny) noexcept
         {
             const ScratchLayout &l = p.batch;
             constexpr int W = WIDTH;
             unsigned hit = 0u;
             const float *lx = buf + l.lx, *ly = buf + l.ly, *lz = buf + l.lz;
-            const int nPairs = static_cast<int>(p.selfPairs.size());
-            for (int base = 0; base < nPairs; base += 64)
+            for (const SelfPairRange &range : p.selfPairRanges)
             {
-                const int end = std::min(nPairs, base + 64);
-                unsigned cand[64];
-                std::uint64_t any = 0u;
-                // the link bounds of every pair first, without branches
-                for (int k = base; k < end; ++k)
+                // the boxes of the two link groups first: no pair of the range can touch where they are apart
+                const unsigned groupLanes = groupsOverlap(g, range.groupA, range.groupB) & lanes & ~hit;
+                if (groupLanes == 0u)
+                    continue;
+                for (int base = range.begin; base < range.end; base += 64)
                 {
-                    const auto kk = static_cast<std::size_t>(k);
-                    const int a = p.selfPairOffsetA[kk], b = p.selfPairOffsetB[kk];
-                    const V dx = V::load(lx + a) - V::load(lx + b);
-                    const V dy = V::load(ly + a) - V::load(ly + b);
-                    const V dz = V::load(lz + a) - V::load(lz + b);
-                    const unsigned c =
-                        cmpLe(fma(dx, dx, fma(dy, dy, dz * dz)), V::broadcast(p.selfPairReach2[kk])).bits() & lanes;
-                    cand[k - base] = c;
-                    any |= static_cast<std::uint64_t>(c != 0u) << (k - base);
-                }
-                while (any != 0u)
-                {
-                    const int k = base + __builtin_ctzll(any);
-                    any &= any - 1u;
-                    const auto &pair = p.selfPairs[static_cast<std::size_t>(k)];
-                    unsigned c = cand[k - base] & ~hit;
-                    if (c == 0u)
-                        continue;
-                    const LinkOp &a = p.links[static_cast<std::size_t>(pair.first)];
-                    const LinkOp &b = p.links[static_cast<std::size_t>(pair.second)];
-                    ensureBatch(p, buf, placed, pair.first);
-                    ensureBatch(p, buf, placed, pair.second);
-                    const V bx = V::load(buf + l.lx + W * pair.second), by = V::load(buf + l.ly + W * pair.second),
-                            bz = V::load(buf + l.lz + W * pair.second);
-                    for (int i = a.first; i < a.first + a.count && c != 0u; ++i)
+                    const int end = std::min(range.end, base + 64);
+                    unsigned cand[64];
+                    std::uint64_t any = 0u;
+                    // the link bounds of every pair first, without branches
+                    for (int k = base; k < end; ++k)
                     {
-                        const V x = V::load(buf + l.sx + W * i), y = V::load(buf + l.sy + W * i),
-                                z = V::load(buf + l.sz + W * i);
-                        const float ri = p.sr[static_cast<std::size_t>(i)];
-                        // lanes where sphere i reaches b's bounding sphere
-                        const V ex = x - bx, ey = y - by, ez = z - bz;
-                        const float rb = ri + b.br;
-                        unsigned near = cmpLe(fma(ex, ex, fma(ey, ey, ez * ez)), V::broadcast(rb * rb)).bits() & c;
-                        for (int j = b.first; j < b.first + b.count && near != 0u; ++j)
-                        {
-                            const V fx = x - V::load(buf + l.sx + W * j), fy = y - V::load(buf + l.sy + W * j),
-                                    fz = z - V::load(buf + l.sz + W * j);
-                            const float rs = ri + p.sr[static_cast<std::size_t>(j)];
-                            const unsigned h =
-                                cmpLe(fma(fx, fx, fma(fy, fy, fz * fz)), V::broadcast(rs * rs)).bits() & near;
-                            near &= ~h;
-                            c &= ~h;
-                            hit |= h;
-                        }
+                        const auto kk = static_cast<std::size_t>(k);
+                        const int a = p.selfPairOffsetA[kk], b = p.selfPairOffsetB[kk];
+                        const V dx = V::load(lx + a) - V::load(lx + b);
+                        const V dy = V::load(ly + a) - V::load(ly + b);
+                        const V dz = V::load(lz + a) - V::load(lz + b);
+                        const unsigned c =
+                            cmpLe(fma(dx, dx, fma(dy, dy, dz * dz)), V::broadcast(p.selfPairReach2[kk])).bits() &
+                            groupLanes;
+                        cand[k - base] = c;
+                        any |= static_cast<std::uint64_t>(c != 0u) << (k - base);
                     }
-                    if ((lanes & ~hit) == 0u || (stopOnAny && hit != 0u))
-                        return hit;
+                    while (any != 0u)
+                    {
+                        const int k = base + __builtin_ctzll(any);
+                        any &= any - 1u;
+                        const auto &pair = p.selfPairs[static_cast<std::size_t>(k)];
+                        unsigned c = cand[k - base] & ~hit;
+                        if (c == 0u)
+                            continue;
+                        const LinkOp &a = p.links[static_cast<std::size_t>(pair.first)];
+                        const LinkOp &b = p.links[static_cast<std::size_t>(pair.second)];
+                        ensureBatch(p, buf, placed, pair.first);
+                        ensureBatch(p, buf, placed, pair.second);
+                        const V bx = V::load(buf + l.lx + W * pair.second), by = V::load(buf + l.ly + W * pair.second),
+                                bz = V::load(buf + l.lz + W * pair.second);
+                        for (int i = a.first; i < a.first + a.count && c != 0u; ++i)
+                        {
+                            const V x = V::load(buf + l.sx + W * i), y = V::load(buf + l.sy + W * i),
+                                    z = V::load(buf + l.sz + W * i);
+                            const float ri = p.sr[static_cast<std::size_t>(i)];
+                            // lanes where sphere i reaches b's bounding sphere
+                            const V ex = x - bx, ey = y - by, ez = z - bz;
+                            const float rb = ri + b.br;
+                            unsigned near = cmpLe(fma(ex, ex, fma(ey, ey, ez * ez)), V::broadcast(rb * rb)).bits() & c;
+                            for (int j = b.first; j < b.first + b.count && near != 0u; ++j)
+                            {
+                                const V fx = x - V::load(buf + l.sx + W * j), fy = y - V::load(buf + l.sy + W * j),
+                                        fz = z - V::load(buf + l.sz + W * j);
+                                const float rs = ri + p.sr[static_cast<std::size_t>(j)];
+                                const unsigned h =
+                                    cmpLe(fma(fx, fx, fma(fy, fy, fz * fz)), V::broadcast(rs * rs)).bits() & near;
+                                near &= ~h;
+                                c &= ~h;
+                                hit |= h;
+                            }
+                        }
+                        if ((lanes & ~hit) == 0u || (stopOnAny && hit != 0u))
+                            return hit;
+                    }
                 }
             }
             return hit;
         }
 
+        /// number of obstacles collideBatch visits (every primitive of every type)
+        static std::size_t obstacleCount(const Environment &env) noexcept
+        {
+            return env.spheres().size() + env.boxes().size() + env.cylinders().size() + env.capsules().size() +
+                   env.clouds().size();
+        }
+
+        /// the boxes of every obstacle, in the order collideBatch visits them (obstacleCount entries)
+        static void obstacleBoxes(const Environment &env, ObstacleBox *out) noexcept
+        {
+            for (const auto &o : env.spheres())
+                *out++ = obstacleBox(o);
+            for (const auto &o : env.boxes())
+                *out++ = obstacleBox(o);
+            for (const auto &o : env.cylinders())
+                *out++ = obstacleBox(o);
+            for (const auto &o : env.capsules())
+                *out++ = obstacleBox(o);
+            for (const auto &o : env.clouds())
+                *out++ = obstacleBox(o);
+        }
+
         /** \brief Collision lanes of a batch after framesBatch. \a active: lanes to check (bits); stops as soon
             as every active lane collides, or at the first collision when \a stopOnAny. */
         static unsigned collideBatch(const KinematicProgram &p, const Environment &env, float *buf, unsigned active,
-                                     bool stopOnAny) noexcept
+                                     bool stopOnAny, const ObstacleBox *boxes = nullptr) noexcept
         {
+            // the obstacle boxes: precomputed by the caller for a whole call (obstacleBoxes), else on the fly
+            std::size_t at = 0;
+            const auto boxOf = [&](const auto &o)
+            {
+                const std::size_t i = at++;
+                return boxes != nullptr ? boxes[i] : obstacleBox(o);
+            };
             Placed placed;
             if (p.links.size() > 64)
                 placeAllBatch(p, buf, placed);
             unsigned hit = 0u;
             const auto done = [&] { return stopOnAny ? hit != 0u : (active & ~hit) == 0u; };
-            const Aabb box = aabbBatch(p, buf, active);
-            const int nLinks = static_cast<int>(p.links.size());
-            // obstacle-major: the robot box rejects far obstacles once, then every link is tested;
-            // returns true when the batch is decided (done())
-            const auto sweep = [&](const auto &obstacles)
+            GroupBoxes groups;
+            const Aabb box = groupBoxesBatch(p, buf, active, groups);
+            const int nGroups = static_cast<int>(p.groups.size());
+            // obstacle-major: the robot box rejects far obstacles once, then the per-lane group boxes, then the
+            // links of the groups that touch (only in the lanes that touch); returns true when decided (done())
+            const auto obstacle = [&](const ObstacleBox &ob, const auto &exact)
             {
-                for (const auto &o : obstacles)
+                if (!overlaps(box, ob))
+                    return false;
+                for (int gi = 0; gi < nGroups; ++gi)
                 {
-                    const ObstacleBox ob = obstacleBox(o);
-                    if (!overlaps(box, ob))
+                    const unsigned lanes = groupTouches(groups, gi, ob) & active & ~hit;
+                    if (lanes == 0u)
                         continue;
-                    for (int li = 0; li < nLinks; ++li)
+                    const LinkGroup &grp = p.groups[static_cast<std::size_t>(gi)];
+                    for (int li = grp.begin; li < grp.end; ++li)
                     {
-                        hit |= obstacleBatch(p, buf, placed, li, active & ~hit, ob,
-                                             [&](const V &x, const V &y, const V &z, const V &r, unsigned)
-                                             { return hitObstacle(x, y, z, r, o).bits(); });
+                        hit |= obstacleBatch(p, buf, placed, li, lanes & ~hit, ob, exact);
                         if (done())
                             return true;
                     }
                 }
                 return false;
             };
+            const auto sweep = [&](const auto &obstacles)
+            {
+                for (const auto &o : obstacles)
+                    if (obstacle(boxOf(o), [&](const V &x, const V &y, const V &z, const V &r, unsigned)
+                                 { return hitObstacle(x, y, z, r, o).bits(); }))
+                        return true;
+                return false;
+            };
             if (sweep(env.spheres()) || sweep(env.boxes()) || sweep(env.cylinders()) || sweep(env.capsules()))
                 return hit;
             for (const CloudObstacle &o : env.clouds())
             {
+                const ObstacleBox ob = boxOf(o);
                 if (o.boundRadius < 0.0f)
                     continue;
-                const ObstacleBox ob = obstacleBox(o);
-                if (!overlaps(box, ob))
-                    continue;
-                for (int li = 0; li < nLinks; ++li)
-                {
-                    hit |= obstacleBatch(p, buf, placed, li, active & ~hit, ob,
-                                         [&](const V &x, const V &y, const V &z, const V &r, unsigned cand)
-                                         {
-                                             const unsigned near =
-                                                 boundTest(x, y, z, r, o.cx, o.cy, o.cz, o.boundRadius).bits() & cand;
-                                             return near != 0u ? hitCloud(x, y, z, r, o, near) : 0u;
-                                         });
-                    if (done())
-                        return hit;
-                }
+                if (obstacle(ob,
+                             [&](const V &x, const V &y, const V &z, const V &r, unsigned cand)
+                             {
+                                 const unsigned near =
+                                     boundTest(x, y, z, r, o.cx, o.cy, o.cz, o.boundRadius).bits() & cand;
+                                 return near != 0u ? hitCloud(x, y, z, r, o, near) : 0u;
+                             }))
+                    return hit;
             }
-            hit |= selfBatch(p, buf, placed, active & ~hit, stopOnAny);
+            hit |= selfBatch(p, buf, placed, groups, active & ~hit, stopOnAny);
             return hit;
         }
     };

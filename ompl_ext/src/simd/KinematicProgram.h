@@ -27,8 +27,8 @@ namespace ropras::ompl_ext::simd
         int variable{-1};
         Motion motion{Motion::None};
         float offset[12];
-        /// the same offset as three rows (r0 r1 r2 t) for the single-configuration path
-        alignas(16) float offsetRows[12];
+        /// the same offset as four columns (r0j r1j r2j 0, then t 0) for the single-configuration path
+        alignas(16) float offsetColumns[16];
         /// the offset rotation is a signed permutation (rpy in multiples of pi/2, common in URDFs): column j of
         /// T_parent * offset is sign[j] * column perm[j] of T_parent, no multiplications
         bool permutation{false};
@@ -36,7 +36,16 @@ namespace ropras::ompl_ext::simd
         float sign[3]{1, 1, 1};
         /// offset translation components that are non-zero (bit k)
         unsigned translationMask{7};
+        /// pre-decoded permutation for the batch path: index into PERMUTATIONS (perm), and per column j the
+        /// sign as +0.0f / -0.0f, applied with an XOR of the sign bit (no branch, no multiplication)
+        int permId{0};
+        float signMask[3]{0.0f, 0.0f, 0.0f};
+        /// the links carried by this frame: KinematicProgram::frameLinks[linkBegin, linkEnd)
+        int linkBegin{0}, linkEnd{0};
     };
+
+    /// the six permutations of three columns; FrameOp::permId indexes this table
+    constexpr int PERMUTATIONS[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
 
     /** \brief A collision link: its frame, bounding sphere (frame coordinates) and spheres [first, first+count)
         in the program's sphere order. Each link's block starts at a multiple of WIDTH and is padded to
@@ -50,6 +59,32 @@ namespace ropras::ompl_ext::simd
         int padded{0};
     };
 
+    /// most link groups a program has (LinkGroup)
+    constexpr int MAX_LINK_GROUPS = 16;
+
+    /** \brief Consecutive program links [begin, end) whose per-lane bounding box the batch path tests first:
+        an obstacle (or another group) that misses the box misses every link of the group in that lane. */
+    struct LinkGroup
+    {
+        int begin{0}, end{0};
+    };
+
+    /** \brief Self pairs [begin, end) (KinematicProgram::selfPairs, sorted by group pair) whose first links are in
+        group groupA and second links in groupB. */
+    struct SelfPairRange
+    {
+        int groupA{0}, groupB{0}, begin{0}, end{0};
+        /// its rows: KinematicProgram::selfPairRows[rowBegin, rowEnd)
+        int rowBegin{0}, rowEnd{0};
+    };
+
+    /** \brief Self pairs pairBegin + i (i < count <= WIDTH) = (a, bFirst + i): one link against consecutive links,
+        tested as one vector in the single-configuration path. */
+    struct SelfPairRow
+    {
+        int a{0}, bFirst{0}, count{0}, pairBegin{0};
+    };
+
     /** \brief Offsets (in floats) into the per-thread scratch buffer. */
     struct ScratchLayout
     {
@@ -61,6 +96,8 @@ namespace ropras::ompl_ext::simd
         int dof{0};
         std::vector<FrameOp> frames;
         std::vector<LinkOp> links;
+        /// link indices grouped by frame (see FrameOp::linkBegin)
+        std::vector<int> frameLinks;
         /// sphere positions in their frames and radii, in program order (link blocks padded, see LinkOp)
         std::vector<float> sx, sy, sz, sr;
         int sphereSlots{0};  ///< total padded length
@@ -69,13 +106,22 @@ namespace ropras::ompl_ext::simd
         /// link bound radii padded to a multiple of WIDTH with 0
         std::vector<float> linkRadius;
         int linkPadded{0};
-        std::vector<std::pair<int, int>> selfPairs;  ///< indices into links
+        /// link groups (at most MAX_LINK_GROUPS, covering every link in order)
+        std::vector<LinkGroup> groups;
+        std::vector<int> groupOfLink;                ///< per link: its group
+        std::vector<std::pair<int, int>> selfPairs;  ///< indices into links, sorted by the groups of both
+        std::vector<SelfPairRange> selfPairRanges;
+        std::vector<SelfPairRow> selfPairRows;
+        /// per row WIDTH floats: (r_a + r_b)^2 of its pairs, -1 in the lanes past count (never reached)
+        std::vector<float> selfRowReach2;
         /// per self pair: float (a.br + b.br)^2 and the batch offsets WIDTH * link of both links
         std::vector<float> selfPairReach2;
         std::vector<int> selfPairOffsetA, selfPairOffsetB;
         std::vector<double> lower, upper;  ///< per variable
-        std::vector<char> unbounded;       ///< continuous joints: any finite value
-        std::vector<char> rotational;      ///< variable drives a RotateZ frame
+        /// per variable: v is valid iff lowerCheck <= v <= upperCheck (finite bounds; +-DBL_MAX when unbounded)
+        std::vector<double> lowerCheck, upperCheck;
+        std::vector<char> unbounded;   ///< continuous joints: any finite value
+        std::vector<char> rotational;  ///< variable drives a RotateZ frame
         ScratchLayout single, batch;
     };
 }  // namespace ropras::ompl_ext::simd

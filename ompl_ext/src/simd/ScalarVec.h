@@ -3,6 +3,7 @@
 #define ROPRAS_OMPL_EXT_SIMD_SCALAR_VEC_H
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 
@@ -189,6 +190,29 @@ namespace ropras::ompl_ext::simd
             for (int i = 0; i < WIDTH; ++i)
                 r.v[i] = std::floor(a.v[i]);
             return r;
+        }
+        /// a with its sign flipped in the lanes where \a s is -0.0f (s holds +0.0f or -0.0f: an XOR of sign bits)
+        friend ScalarVec flipSign(const ScalarVec &a, const ScalarVec &s) noexcept
+        {
+            ScalarVec r;
+            for (int i = 0; i < WIDTH; ++i)
+                r.v[i] = std::signbit(s.v[i]) ? -a.v[i] : a.v[i];
+            return r;
+        }
+        /** \brief WIDTH rows of \a dof <= 8 doubles (row-major, consecutive) into \a out as dof vectors of WIDTH
+            floats (out[8 j + i] = rows[dof i + j]). True when every value satisfies lo[j] <= v <= hi[j] (NaN
+            fails). */
+        static bool loadRows(const double *rows, int dof, const double *lo, const double *hi, float *out) noexcept
+        {
+            bool ok = true;
+            for (int i = 0; i < WIDTH; ++i)
+                for (int j = 0; j < dof; ++j)
+                {
+                    const double x = rows[dof * i + j];
+                    out[WIDTH * j + i] = static_cast<float>(x);
+                    ok = ok && x >= lo[j] && x <= hi[j];
+                }
+            return ok;
         }
         /// m ? a : b per lane
         friend ScalarVec select(const ScalarMask &m, const ScalarVec &a, const ScalarVec &b) noexcept
