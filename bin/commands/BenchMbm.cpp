@@ -1,6 +1,7 @@
 // `ropras bench-mbm`: every MotionBenchMaker problem, every planner, with (a) the ropras validators, (b) FCL with
 // the same spheres, (c) FCL with the URDF's meshes; same OMPL, same seed, non-threaded termination conditions.
 #include <ompl/base/PlannerTerminationCondition.h>
+#include <ompl/config.h>
 #include <ompl/tools/benchmark/Benchmark.h>
 #include <ompl/tools/benchmark/MachineSpecs.h>
 #include <ompl/util/Console.h>
@@ -106,6 +107,7 @@ namespace
     {
         std::string category;
         int problem{0};
+        int status{0};  ///< ompl::base::PlannerStatus::StatusType
         bool solved{false};
         double planUs{0}, simplifyUs{0}, length{0}, simplifiedLength{0};
     };
@@ -176,6 +178,100 @@ namespace
         return problems;
     }
 
+    /// a number for the OMPL log: full precision (std::to_string would round 85 us to 0.000085 s)
+    std::string logNumber(double value)
+    {
+        std::ostringstream out;
+        out << std::setprecision(9) << value;
+        return out.str();
+    }
+
+    /** Writes the runs in OMPL's benchmark log format, for ompl_benchmark_statistics.py and Planner Arena: one
+        experiment, one planner entry per planner and checker ("geometric_<planner>_<checker>") with the planner's
+        parameters as its settings, one run per problem and repetition. */
+    void writeOmplLog(const Args &a, const RobotModel &robot, const std::vector<Problem> &problems,
+                      const std::map<std::string, std::map<std::string, std::vector<Run>>> &results,
+                      const std::map<std::string, std::map<std::string, std::string>> &plannerSettings,
+                      double totalSeconds)
+    {
+        std::vector<std::string> categories;
+        for (const Problem &p : problems)
+            if (std::find(categories.begin(), categories.end(), p.category) == categories.end())
+                categories.push_back(p.category);
+        ompl::geometric::SimpleSetup dummy(createStateSpace(robot));
+        LogWriter writer(dummy, "ropras-bench-mbm");
+        auto &exp = writer.experiment();
+        exp.name = "ropras-bench-mbm";
+        exp.maxTime = a.time;
+        exp.maxMem = 0.0;
+        exp.runCount = 0;
+        exp.startTime = ompl::time::now();
+        exp.totalDuration = totalSeconds;
+        exp.seed = a.seed;
+        exp.host = ompl::machine::getHostname();
+        exp.cpuInfo = ompl::machine::getCPUInfo();
+        // Multi-line blocks must end with a newline: the reader stops at a line that starts with "|>>>".
+        std::ostringstream setupInfo;
+        setupInfo << "ropras bench-mbm: robot " << robot.name() << " (" << a.urdf << "), problems " << a.problems
+                  << ", motion-check resolution " << a.resolution << " rad, " << a.repeat << " repeat(s)\n"
+                  << "run property 'category' indexes these categories:";
+        for (std::size_t i = 0; i < categories.size(); ++i)
+            setupInfo << ' ' << i << '=' << categories[i];
+        setupInfo << '\n';
+        exp.setupInfo = setupInfo.str();
+        if (!exp.cpuInfo.empty() && exp.cpuInfo.back() != '\n')
+            exp.cpuInfo += '\n';
+        exp.parameters["resolution REAL"] = logNumber(a.resolution);
+        exp.parameters["problems INTEGER"] = std::to_string(problems.size());
+        exp.parameters["repeat INTEGER"] = std::to_string(a.repeat);
+        for (const auto &[checkerName, byPlanner] : results)
+            for (const auto &[plannerName, runs] : byPlanner)
+            {
+                ompl::tools::Benchmark::PlannerExperiment pe;
+                pe.name = "geometric_" + plannerName + "_" + checkerName;
+                if (auto it = plannerSettings.find(plannerName); it != plannerSettings.end())
+                    for (const auto &[key, value] : it->second)
+                        pe.common[key] = value;  // as OMPL's Benchmark: the planner's parameters by name
+                pe.common["checker"] = checkerName;
+                for (const Run &run : runs)
+                {
+                    ompl::tools::Benchmark::RunProperties p;
+                    p["time REAL"] = logNumber(run.planUs * 1e-6);
+                    p["solved BOOLEAN"] = run.solved ? "1" : "0";
+                    p["status ENUM"] = std::to_string(run.status);
+                    if (run.solved)  // as OMPL's Benchmark: no path, no length (NULL in the database)
+                    {
+                        p["length REAL"] = logNumber(run.length);
+                        if (a.simplify)
+                        {
+                            p["simplification time REAL"] = logNumber(run.simplifyUs * 1e-6);
+                            p["simplified length REAL"] = logNumber(run.simplifiedLength);
+                        }
+                    }
+                    p["problem INTEGER"] = std::to_string(run.problem);
+                    p["category INTEGER"] = std::to_string(
+                        std::find(categories.begin(), categories.end(), run.category) - categories.begin());
+                    pe.runs.push_back(p);
+                }
+                exp.runCount = std::max<unsigned>(exp.runCount, static_cast<unsigned>(pe.runs.size()));
+                exp.planners.push_back(pe);
+            }
+        // Debian builds OMPL with an empty OMPL_VERSION, so Benchmark writes "OMPL version " without a number;
+        // Planner Arena reads the library and version from that first line.
+        std::ostringstream text;
+        writer.saveResultsToStream(text);
+        std::string log = text.str();
+        const std::string versionLine = "OMPL version " + std::to_string(OMPL_MAJOR_VERSION) + "." +
+                                        std::to_string(OMPL_MINOR_VERSION) + "." + std::to_string(OMPL_PATCH_VERSION);
+        const std::size_t eol = log.find('\n');
+        if (log.rfind("OMPL version", 0) == 0 && eol != std::string::npos)
+            log.replace(0, eol, versionLine);
+        std::ofstream file(a.omplLog);
+        if (!(file << log))
+            throw Error("cannot write OMPL log " + a.omplLog);
+        std::cout << "wrote " << a.omplLog << " (ompl_benchmark_statistics.py " << a.omplLog << ")\n";
+    }
+
     int run(const Args &a)
     {
         ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
@@ -218,73 +314,85 @@ namespace
 
         // results[checker][planner] = runs
         std::map<std::string, std::map<std::string, std::vector<Run>>> results;
+        std::map<std::string, std::map<std::string, std::string>> plannerSettings;
         const auto benchStart = Clock::now();
-        for (const Problem &problem : problems)
-        {
-            for (const std::string &checkerName : checkers)
+        // Planner by planner: OMPL's random generators take their seeds from one global sequence, so a planner's
+        // random draws depend on the generators created before it. With the planners in the outer loop, changing
+        // one planner does not change the random draws of the planners listed before it (clean A/B runs).
+        for (const std::string &plannerName : a.planners)
+            for (const Problem &problem : problems)
             {
-                // Each checker gets its own SimpleSetup over the same state space definition.
-                ompl::geometric::SimpleSetup ss(createStateSpace(*robot));
-                const auto &si = ss.getSpaceInformation();
-                if (checkerName == "ropras")
+                for (const std::string &checkerName : checkers)
                 {
-                    ss.setStateValidityChecker(std::make_shared<StateValidityChecker>(si, checker, problem.env));
-                    si->setMotionValidator(std::make_shared<MotionValidator>(si, checker, problem.env, a.resolution));
-                }
-                else
-                {
-                    const Environment *env = problem.env.get();
-                    if (checkerName == "fcl_sphere")
-                        ss.setStateValidityChecker(
-                            [fclSphere, env](const ob::State *s)
-                            { return fclSphere->isValid(*env, s->as<ob::RealVectorStateSpace::StateType>()->values); });
-                    else
-                        ss.setStateValidityChecker(
-                            [fclMesh, env](const ob::State *s)
-                            { return fclMesh->isValid(*env, s->as<ob::RealVectorStateSpace::StateType>()->values); });
-                    si->setMotionValidator(std::make_shared<SequentialMotionValidator>(si, a.resolution));
-                }
-                si->setup();
-                ob::ScopedState<> start(ss.getStateSpace()), goal(ss.getStateSpace());
-                for (std::size_t k = 0; k < robot->dof(); ++k)
-                {
-                    start[k] = problem.start[k];
-                    goal[k] = problem.goal[k];
-                }
-                ss.setStartAndGoalStates(start, goal);
-                for (const std::string &plannerName : a.planners)
-                {
-                    ss.setPlanner(PlannerRegistry::instance().create(plannerName, si, params));
-                    ss.setup();
-                    for (unsigned r = 0; r < a.repeat; ++r)
+                    // Each checker gets its own SimpleSetup over the same state space definition.
+                    ompl::geometric::SimpleSetup ss(createStateSpace(*robot));
+                    const auto &si = ss.getSpaceInformation();
+                    if (checkerName == "ropras")
                     {
-                        ss.clear();
-                        Run run;
-                        run.category = problem.category;
-                        run.problem = problem.index;
-                        auto ptc = ob::plannerOrTerminationCondition(
-                            ob::timedPlannerTerminationCondition(a.time),
-                            ob::exactSolnPlannerTerminationCondition(ss.getProblemDefinition()));
-                        const auto t0 = Clock::now();
-                        const ob::PlannerStatus status = ss.solve(ptc);
-                        run.planUs = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
-                        run.solved = status == ob::PlannerStatus::EXACT_SOLUTION;
-                        if (run.solved)
+                        ss.setStateValidityChecker(std::make_shared<StateValidityChecker>(si, checker, problem.env));
+                        si->setMotionValidator(
+                            std::make_shared<MotionValidator>(si, checker, problem.env, a.resolution));
+                    }
+                    else
+                    {
+                        const Environment *env = problem.env.get();
+                        if (checkerName == "fcl_sphere")
+                            ss.setStateValidityChecker(
+                                [fclSphere, env](const ob::State *s) {
+                                    return fclSphere->isValid(*env,
+                                                              s->as<ob::RealVectorStateSpace::StateType>()->values);
+                                });
+                        else
+                            ss.setStateValidityChecker(
+                                [fclMesh, env](const ob::State *s) {
+                                    return fclMesh->isValid(*env, s->as<ob::RealVectorStateSpace::StateType>()->values);
+                                });
+                        si->setMotionValidator(std::make_shared<SequentialMotionValidator>(si, a.resolution));
+                    }
+                    si->setup();
+                    ob::ScopedState<> start(ss.getStateSpace()), goal(ss.getStateSpace());
+                    for (std::size_t k = 0; k < robot->dof(); ++k)
+                    {
+                        start[k] = problem.start[k];
+                        goal[k] = problem.goal[k];
+                    }
+                    ss.setStartAndGoalStates(start, goal);
+                    {
+                        ss.setPlanner(PlannerRegistry::instance().create(plannerName, si, params));
+                        ss.setup();
+                        if (plannerSettings.count(plannerName) == 0)  // every parameter's value, for the OMPL log
+                            ss.getPlanner()->params().getParams(plannerSettings[plannerName]);
+                        for (unsigned r = 0; r < a.repeat; ++r)
                         {
-                            run.length = ss.getSolutionPath().length();
-                            if (a.simplify)
+                            ss.clear();
+                            Run run;
+                            run.category = problem.category;
+                            run.problem = problem.index;
+                            auto ptc = ob::plannerOrTerminationCondition(
+                                ob::timedPlannerTerminationCondition(a.time),
+                                ob::exactSolnPlannerTerminationCondition(ss.getProblemDefinition()));
+                            const auto t0 = Clock::now();
+                            const ob::PlannerStatus status = ss.solve(ptc);
+                            run.planUs = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
+                            run.status = static_cast<int>(ob::PlannerStatus::StatusType(status));
+                            run.solved = status == ob::PlannerStatus::EXACT_SOLUTION;
+                            if (run.solved)
                             {
-                                const auto s0 = Clock::now();
-                                ss.simplifySolution();
-                                run.simplifyUs = std::chrono::duration<double, std::micro>(Clock::now() - s0).count();
+                                run.length = ss.getSolutionPath().length();
+                                if (a.simplify)
+                                {
+                                    const auto s0 = Clock::now();
+                                    ss.simplifySolution();
+                                    run.simplifyUs =
+                                        std::chrono::duration<double, std::micro>(Clock::now() - s0).count();
+                                }
+                                run.simplifiedLength = ss.getSolutionPath().length();
                             }
-                            run.simplifiedLength = ss.getSolutionPath().length();
+                            results[checkerName][plannerName].push_back(run);
                         }
-                        results[checkerName][plannerName].push_back(run);
                     }
                 }
             }
-        }
         const double totalSeconds = std::chrono::duration<double>(Clock::now() - benchStart).count();
 
         // Report: per checker and planner, per category and overall.
@@ -362,42 +470,7 @@ namespace
             std::cout << "wrote " << a.json << '\n';
         }
         if (!a.omplLog.empty())
-        {
-            ompl::geometric::SimpleSetup dummy(createStateSpace(*robot));
-            LogWriter writer(dummy, "mbm");
-            auto &exp = writer.experiment();
-            exp.name = "ropras-bench-mbm";
-            exp.maxTime = a.time;
-            exp.maxMem = 0.0;
-            exp.runCount = a.repeat;
-            exp.startTime = ompl::time::now();
-            exp.totalDuration = totalSeconds;
-            exp.seed = a.seed;
-            exp.host = ompl::machine::getHostname();
-            exp.cpuInfo = ompl::machine::getCPUInfo();
-            exp.setupInfo = "ropras bench-mbm on " + a.problems;
-            for (const auto &[checkerName, byPlanner] : results)
-                for (const auto &[plannerName, runs] : byPlanner)
-                {
-                    ompl::tools::Benchmark::PlannerExperiment pe;
-                    pe.name = "geometric_" + plannerName + "_" + checkerName;
-                    for (const Run &run : runs)
-                    {
-                        ompl::tools::Benchmark::RunProperties p;
-                        p["time REAL"] = std::to_string(run.planUs * 1e-6);
-                        p["solved BOOLEAN"] = run.solved ? "1" : "0";
-                        p["simplification time REAL"] = std::to_string(run.simplifyUs * 1e-6);
-                        p["length REAL"] = std::to_string(run.length);
-                        p["simplified length REAL"] = std::to_string(run.simplifiedLength);
-                        p["problem INTEGER"] = std::to_string(run.problem);
-                        pe.runs.push_back(p);
-                    }
-                    exp.planners.push_back(pe);
-                }
-            if (!writer.saveResultsToFile(a.omplLog.c_str()))
-                throw Error("cannot write OMPL log " + a.omplLog);
-            std::cout << "wrote " << a.omplLog << " (ompl_benchmark_statistics.py " << a.omplLog << ")\n";
-        }
+            writeOmplLog(a, *robot, problems, results, plannerSettings, totalSeconds);
         return 0;
     }
 

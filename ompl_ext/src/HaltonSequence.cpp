@@ -1,6 +1,8 @@
 #include "ropras/ompl_ext/HaltonSequence.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "ropras/core/Error.h"
 
@@ -11,8 +13,7 @@ namespace ropras::ompl_ext
         constexpr unsigned PRIMES[HaltonSequence::MAX_DIMENSIONS] = {2,  3,  5,  7,   11,  13,  17,  19,  23,  29, 31,
                                                                      37, 41, 43, 47,  53,  59,  61,  67,  71,  73, 79,
                                                                      83, 89, 97, 101, 103, 107, 109, 113, 127, 131};
-        constexpr std::size_t MAX_DIGITS = 64;  // enough for any 64-bit index in base >= 2
-    }                                           // namespace
+    }  // namespace
 
     unsigned HaltonSequence::base(std::size_t dimension)
     {
@@ -45,8 +46,7 @@ namespace ropras::ompl_ext
         {
             Counter &c = counters_[k];
             c.base = PRIMES[k];
-            c.digits.assign(MAX_DIGITS, 0);
-            c.powers.resize(MAX_DIGITS);
+            std::fill(std::begin(c.digits), std::end(c.digits), 0u);
             double p = 1.0 / c.base;
             for (double &power : c.powers)
             {
@@ -61,7 +61,19 @@ namespace ropras::ompl_ext
     void HaltonSequence::next(double *out) noexcept
     {
         ++index_;
-        for (std::size_t k = 0; k < counters_.size(); ++k)
+        // Base 2 in closed form: the radical inverse is the index with its bits reversed, no carry loop (whose
+        // branch goes either way half of the time in base 2).
+        if (!counters_.empty())
+        {
+            std::uint64_t bits = index_;
+            bits = ((bits >> 1) & 0x5555555555555555ULL) | ((bits & 0x5555555555555555ULL) << 1);
+            bits = ((bits >> 2) & 0x3333333333333333ULL) | ((bits & 0x3333333333333333ULL) << 2);
+            bits = ((bits >> 4) & 0x0f0f0f0f0f0f0f0fULL) | ((bits & 0x0f0f0f0f0f0f0f0fULL) << 4);
+            bits = __builtin_bswap64(bits);
+            // the top 53 bits, exactly representable; truncating the rest keeps the value in [0, 1)
+            out[0] = static_cast<double>(bits >> 11) * 0x1.0p-53;
+        }
+        for (std::size_t k = 1; k < counters_.size(); ++k)
         {
             Counter &c = counters_[k];
             std::size_t j = 0;

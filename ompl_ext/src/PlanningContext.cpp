@@ -1,6 +1,7 @@
 #include "ropras/ompl_ext/PlanningContext.h"
 
 #include <cmath>
+#include <new>
 #include <sstream>
 
 #include "ropras/core/Error.h"
@@ -42,11 +43,31 @@ namespace ropras::ompl_ext
         };
 
         /// RealVectorStateSpace whose default projection for one or two joints is JointIdentityProjection
-        /// (StateSpace::setup() re-registers the default projections, so it has to happen here).
+        /// (StateSpace::setup() re-registers the default projections, so it has to happen here), and whose
+        /// states are one allocation each: the StateType header with its values right behind it.
+        /// RealVectorStateSpace allocates the two separately, so every distance() in a planner's
+        /// nearest-neighbour search chases a pointer to a second, unrelated cache line; here both sit together.
         class JointStateSpace : public ompl::base::RealVectorStateSpace
         {
         public:
             using ompl::base::RealVectorStateSpace::RealVectorStateSpace;
+            /// bytes before the values: the header rounded up to a double
+            static constexpr std::size_t HEADER =
+                (sizeof(StateType) + alignof(double) - 1) / alignof(double) * alignof(double);
+
+            ompl::base::State *allocState() const override
+            {
+                void *block = ::operator new(HEADER + dimension_ * sizeof(double));
+                auto *state = new (block) StateType();
+                state->values = reinterpret_cast<double *>(static_cast<char *>(block) + HEADER);
+                return state;
+            }
+            void freeState(ompl::base::State *state) const override
+            {
+                auto *s = static_cast<StateType *>(state);
+                s->~StateType();
+                ::operator delete(static_cast<void *>(s));
+            }
             void registerProjections() override
             {
                 if (getDimension() <= 2)

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "NodeBlocks.h"
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/CollisionChecker.h"
 #include "ropras/ompl_ext/HaltonSequence.h"
@@ -28,6 +29,8 @@ namespace ropras::ompl_ext
     VectorizedRRTConnect::VectorizedRRTConnect(const ompl::base::SpaceInformationPtr &si)
         : ompl::base::Planner(si, "VectorizedRRTConnect")
     {
+        for (Tree &tree : trees_)
+            tree.blocks = std::make_unique<NodeBlocks>();
         specs_.recognizedGoal = ompl::base::GOAL_SAMPLEABLE_REGION;
         specs_.directed = true;
         Planner::declareParam<double>("range", this, &VectorizedRRTConnect::setRange, &VectorizedRRTConnect::getRange,
@@ -44,6 +47,8 @@ namespace ropras::ompl_ext
                                       &VectorizedRRTConnect::getDynamicDomainAlpha, "0.:0.0001:1.");
         Planner::declareParam<double>("dd_min_radius", this, &VectorizedRRTConnect::setDynamicDomainMinRadius,
                                       &VectorizedRRTConnect::getDynamicDomainMinRadius, "0.:0.1:10.");
+        Planner::declareParam<bool>("direct", this, &VectorizedRRTConnect::setDirectConnection,
+                                    &VectorizedRRTConnect::getDirectConnection, "0,1");
         Planner::declareParam<unsigned>("max_samples", this, &VectorizedRRTConnect::setMaxSamples,
                                         &VectorizedRRTConnect::getMaxSamples, "0:1:1000000");
         Planner::declareParam<unsigned>("seed", this, &VectorizedRRTConnect::setSeed, &VectorizedRRTConnect::getSeed,
@@ -71,10 +76,17 @@ namespace ropras::ompl_ext
                         ")");
         if (!(range_ > 0.0) || !std::isfinite(range_))
             throw Error("VectorizedRRTConnect: range must be finite and > 0 (got " + std::to_string(range_) + ")");
+        if (space->getDimension() > NodeBlocks::MAX_DOF)
+            throw Error("VectorizedRRTConnect supports at most " + std::to_string(NodeBlocks::MAX_DOF) +
+                        " dimensions (the state space " + space->getName() + " has " +
+                        std::to_string(space->getDimension()) + ")");
         dof_ = space->getDimension();
         lower_ = space->getBounds().low;
         upper_ = space->getBounds().high;
         scratch_.assign(3 * dof_, 0.0);
+        for (Tree &tree : trees_)
+            tree.blocks->reset(dof_);  // the block layout depends on dof_
+        reserveTrees(1024);
         if (dof_ <= HaltonSequence::MAX_DIMENSIONS)
             halton_.reset(dof_);
         if (!sampler_)
@@ -106,20 +118,33 @@ namespace ropras::ompl_ext
         }
     }
 
+    void VectorizedRRTConnect::reserveTrees(std::size_t nodes)
+    {
+        for (Tree &tree : trees_)
+        {
+            tree.q.reserve(nodes * dof_);
+            tree.blocks->reserve(nodes);
+            tree.parent.reserve(nodes);
+            tree.radius.reserve(nodes);
+        }
+    }
+
     void VectorizedRRTConnect::clear()
     {
         Planner::clear();
-        for (Tree &tree : trees_)
+        for (Tree &tree : trees_)  // vector::clear keeps the capacity: the next solve does not allocate
         {
             tree.q.clear();
+            tree.blocks->clear();
             tree.parent.clear();
             tree.radius.clear();
         }
         // The Halton sequence continues across queries (a retry after clear() draws new samples).
     }
 
-    bool VectorizedRRTConnect::motionValid(const double *a, const double *b) const
+    bool VectorizedRRTConnect::motionValid(const double *a, const double *b)
     {
+        ++motionChecks_;
         if (checker_ != nullptr)
             return checker_->isMotionValid(*environment_, a, b, resolution_);
         // Generic fallback through OMPL's interface for other validators.
@@ -134,28 +159,22 @@ namespace ropras::ompl_ext
 
     std::size_t VectorizedRRTConnect::nearest(const Tree &tree, const double *q, double &distSq) const
     {
-        std::size_t best = 0;
-        distSq = INF;
-        const double *node = tree.q.data();
-        for (std::size_t i = 0; i < tree.size(); ++i, node += dof_)
+        // the float block scan picks the node, the exact distance to it is computed in double
+        const std::size_t best = tree.blocks->nearest(q);
+        const double *node = tree.q.data() + best * dof_;
+        double d = 0.0;
+        for (std::size_t k = 0; k < dof_; ++k)
         {
-            double d = 0.0;
-            for (std::size_t k = 0; k < dof_; ++k)
-            {
-                const double e = node[k] - q[k];
-                d += e * e;
-            }
-            if (d < distSq)
-            {
-                distSq = d;
-                best = i;
-            }
+            const double e = node[k] - q[k];
+            d += e * e;
         }
+        distSq = d;
         return best;
     }
 
     void VectorizedRRTConnect::addNode(Tree &tree, const double *q, int parent)
     {
+        tree.blocks->add(q);
         tree.q.insert(tree.q.end(), q, q + dof_);
         tree.parent.push_back(parent);
         tree.radius.push_back(INF);
@@ -178,13 +197,23 @@ namespace ropras::ompl_ext
         std::copy(values(sampleState_), values(sampleState_) + dof_, out);
     }
 
-    int VectorizedRRTConnect::extend(Tree &tree, const double *target, bool &reached)
+    int VectorizedRRTConnect::extend(Tree &tree, const double *target, bool &reached, int fromNode)
     {
         double distSq;
-        const std::size_t near = nearest(tree, target, distSq);
+        std::size_t near;
+        if (fromNode < 0)
+            near = nearest(tree, target, distSq);
+        else
+        {
+            near = static_cast<std::size_t>(fromNode);
+            const double *node = tree.q.data() + near * dof_;
+            distSq = 0.0;
+            for (std::size_t k = 0; k < dof_; ++k)
+                distSq += (node[k] - target[k]) * (node[k] - target[k]);
+        }
         const double dist = std::sqrt(distSq);
         reached = false;
-        if (dynamicDomain_ && dist > tree.radius[near])
+        if (dynamicDomain_ && fromNode < 0 && dist > tree.radius[near])
             return -1;
         const double *from = tree.q.data() + near * dof_;
         double *to = scratch_.data();
@@ -247,10 +276,17 @@ namespace ropras::ompl_ext
         if (goal == nullptr)
             return ompl::base::PlannerStatus::UNRECOGNIZED_GOAL_TYPE;
 
-        auto mv = std::dynamic_pointer_cast<const MotionValidator>(si_->getMotionValidator());
-        checker_ = mv ? mv->checker().get() : nullptr;
-        environment_ = mv ? mv->environment().get() : nullptr;
-        resolution_ = mv ? mv->resolution() : resolution_;
+        // The ropras validator, when installed: one dynamic_cast per validator, not per solve. The environment
+        // and resolution are read every solve (setEnvironment / setResolution may change them between queries).
+        const ompl::base::MotionValidator *validator = si_->getMotionValidator().get();
+        if (validator != validatorSeen_)
+        {
+            validatorSeen_ = validator;
+            roprasValidator_ = dynamic_cast<const MotionValidator *>(validator);
+        }
+        checker_ = roprasValidator_ != nullptr ? roprasValidator_->checker().get() : nullptr;
+        environment_ = roprasValidator_ != nullptr ? roprasValidator_->environment().get() : nullptr;
+        resolution_ = roprasValidator_ != nullptr ? roprasValidator_->resolution() : resolution_;
 
         while (const ompl::base::State *st = pis_.nextStart())
             addNode(trees_[0], values(st), -1);
@@ -261,16 +297,41 @@ namespace ropras::ompl_ext
         double *targetBuf = scratch_.data() + 2 * dof_;
         int a = 0;  // tree being extended this iteration
         unsigned samples = 0;
-        while (!ptc)
+        bool directTried = !direct_;
+        // The termination condition costs a clock read and a lock (tens of ns): evaluate it before every
+        // iteration that follows a motion check, and every 8th after cheap ones (samples the dynamic domain
+        // rejected without any check).
+        unsigned cheapIterations = 0;
+        std::uint64_t checksSeen = ~std::uint64_t{0};
+        while (true)
         {
-            // Keep drawing goal states like OMPL's RRTConnect: always at least one, more as the trees grow.
-            if (trees_[1].size() == 0 || pis_.getSampledGoalsCount() < trees_[1].size() / 2)
+            if (motionChecks_ != checksSeen || ++cheapIterations >= 8)
+            {
+                if (ptc)
+                    break;
+                checksSeen = motionChecks_;
+                cheapIterations = 0;
+            }
+            // Keep drawing goal states like OMPL's RRTConnect: always at least one, more as the trees grow
+            // (while the goal can give more: a single goal state is sampled once).
+            if (trees_[1].size() == 0 || (pis_.getSampledGoalsCount() < trees_[1].size() / 2 &&
+                                          pis_.getSampledGoalsCount() < goal->maxSampleCount() && goal->canSample()))
             {
                 const ompl::base::State *st = trees_[1].size() == 0 ? pis_.nextGoal(ptc) : pis_.nextGoal();
                 if (st != nullptr)
                     addNode(trees_[1], values(st), -1);
                 if (trees_[1].size() == 0)
                     return ompl::base::PlannerStatus::INVALID_GOAL;
+            }
+            if (!directTried)
+            {
+                // The straight motion from the first start to the first goal state, checked once.
+                directTried = true;
+                if (motionValid(trees_[0].q.data(), trees_[1].q.data()))
+                {
+                    buildSolution(0, 0, true);
+                    return ompl::base::PlannerStatus::EXACT_SOLUTION;
+                }
             }
             if (maxSamples_ != 0 && samples >= maxSamples_)
                 break;
@@ -292,7 +353,8 @@ namespace ropras::ompl_ext
                 while (true)
                 {
                     bool hit;
-                    const int node = extend(tb, targetBuf, hit);
+                    // after the first step, continue from the node just added (the target lies straight ahead)
+                    const int node = extend(tb, targetBuf, hit, last);
                     if (node < 0)
                         break;
                     last = node;

@@ -9,8 +9,9 @@ namespace ropras::ompl_ext
 {
     /** \brief The Halton sequence in up to 32 dimensions (bases: the first primes), generated incrementally:
         each next() adds one in every base's digit counter and updates the radical inverse with the carries,
-        O(1) amortized per dimension instead of one integer division per digit. Point i (from 1) equals
-        radicalInverse(i, base_k) in dimension k to rounding. */
+        O(1) amortized per dimension instead of one integer division per digit; base 2 is the index with its
+        bits reversed (no carry loop). Point i (from 1) equals radicalInverse(i, base_k) in dimension k to
+        rounding. */
     class HaltonSequence
     {
     public:
@@ -26,13 +27,16 @@ namespace ropras::ompl_ext
         static double radicalInverse(std::uint64_t index, unsigned base);
         static unsigned base(std::size_t dimension);
 
+        static constexpr std::size_t MAX_DIGITS = 64;  ///< enough for any 64-bit index in base >= 2
+
     private:
+        /// one dimension's digit counter, in one block (no pointer chase per carry)
         struct Counter
         {
             unsigned base{2};
-            std::vector<unsigned> digits;  ///< least significant first
-            std::vector<double> powers;    ///< base^-(j+1)
             double value{0.0};
+            unsigned digits[MAX_DIGITS]{};  ///< least significant first
+            double powers[MAX_DIGITS]{};    ///< base^-(j+1)
         };
         std::vector<Counter> counters_;
         std::uint64_t index_{0};

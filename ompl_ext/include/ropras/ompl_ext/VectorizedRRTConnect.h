@@ -4,6 +4,7 @@
 #include <ompl/base/Planner.h>
 #include <ompl/base/StateSampler.h>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "ropras/ompl_ext/HaltonSequence.h"
@@ -12,6 +13,8 @@ namespace ropras::ompl_ext
 {
     class CollisionChecker;
     class Environment;
+    class MotionValidator;
+    class NodeBlocks;
 
     /** \brief Bidirectional RRT-Connect that works on flat joint arrays and validates every extension with
         the raked SIMD motion check (registry name "VectorizedRRTConnect").
@@ -27,8 +30,17 @@ namespace ropras::ompl_ext
         - dynamic domain: each node has a radius; samples farther than it from their nearest node are
           rejected; the radius shrinks when an extension from the node fails and grows when one succeeds
           (`dynamic_domain`, `dd_radius`, `dd_alpha`, `dd_min_radius`);
-        - connection: the other tree greedily extends toward each new node in steps of `range`.
-        Nearest neighbours: a linear scan over the flat node array (trees stay small). */
+        - connection: the other tree greedily extends toward each new node in steps of `range`, from its
+          nearest node first and then from each node it just added (no nearest-neighbour search per step);
+        - direct connection: before growing any tree, the straight start-goal motion is checked once
+          (`direct`); a raked check of an invalid motion usually fails within its first batches.
+        Nearest neighbours: a linear scan over a float copy of the nodes, laid out in blocks of 8 (one SIMD
+        register per joint), then the exact distance to the winner in double (trees stay small at the median).
+        Per-solve fixed costs are kept out of solve(): tree storage is reserved in setup() and keeps its
+        capacity across clear(), the sampler state is allocated once, the validator is identified once (one
+        dynamic_cast per validator, not per solve), and the termination condition (a clock read and a lock) is
+        evaluated after every motion check but only every 8th cheap iteration (a sample the dynamic domain
+        rejects costs a Halton point and one nearest-neighbour scan). */
     class VectorizedRRTConnect : public ompl::base::Planner
     {
     public:
@@ -54,6 +66,8 @@ namespace ropras::ompl_ext
         double getDynamicDomainAlpha() const { return ddAlpha_; }
         void setDynamicDomainMinRadius(double r) { ddMinRadius_ = r; }
         double getDynamicDomainMinRadius() const { return ddMinRadius_; }
+        void setDirectConnection(bool on) { direct_ = on; }
+        bool getDirectConnection() const { return direct_; }
         void setMaxSamples(unsigned n) { maxSamples_ = n; }
         unsigned getMaxSamples() const { return maxSamples_; }
         /** \brief Seed of the Halton shift (parameter "seed"): 0 (default) draws the shift from OMPL's RNG at
@@ -66,20 +80,24 @@ namespace ropras::ompl_ext
     private:
         struct Tree
         {
-            std::vector<double> q;       ///< node configurations, row-major
-            std::vector<int> parent;     ///< -1 for a root
-            std::vector<double> radius;  ///< dynamic-domain radius per node
+            std::vector<double> q;               ///< node configurations, row-major
+            std::unique_ptr<NodeBlocks> blocks;  ///< the same in float, for nearest() (private header)
+            std::vector<int> parent;             ///< -1 for a root
+            std::vector<double> radius;          ///< dynamic-domain radius per node
             std::size_t size() const { return parent.size(); }
         };
 
-        bool motionValid(const double *a, const double *b) const;
+        bool motionValid(const double *a, const double *b);
         bool stateValid(const double *q) const;
         std::size_t nearest(const Tree &tree, const double *q, double &distSq) const;
         void addNode(Tree &tree, const double *q, int parent);
         void sample(double *out);
-        /// extends \a tree toward \a target by at most range_; returns the new node index or -1
-        int extend(Tree &tree, const double *target, bool &reached);
+        /// extends \a tree toward \a target by at most range_ from its nearest node (or from \a fromNode when
+        /// >= 0, without the dynamic-domain test); returns the new node index or -1
+        int extend(Tree &tree, const double *target, bool &reached, int fromNode = -1);
         void buildSolution(int startNode, int goalNode, bool startTreeIsA);
+        /// reserves room for \a nodes nodes in both trees
+        void reserveTrees(std::size_t nodes);
 
         Tree trees_[2];  ///< 0: rooted at start states, 1: rooted at goal states
         std::size_t dof_{0};
@@ -87,6 +105,8 @@ namespace ropras::ompl_ext
         HaltonSequence halton_;
         ompl::base::StateSamplerPtr sampler_;
         ompl::base::State *sampleState_{nullptr};
+        const ompl::base::MotionValidator *validatorSeen_{nullptr};  ///< the validator checker_ was taken from
+        const MotionValidator *roprasValidator_{nullptr};            ///< non-null when it is ropras'
         const CollisionChecker *checker_{nullptr};
         const Environment *environment_{nullptr};
         double resolution_{1.0 / 32.0};
@@ -98,8 +118,10 @@ namespace ropras::ompl_ext
         double ddRadius_{4.0};
         double ddAlpha_{1.0e-4};
         double ddMinRadius_{1.0};
-        unsigned maxSamples_{0};  ///< 0: unlimited (until the termination condition)
-        unsigned seed_{0};        ///< 0: Halton shift from OMPL's RNG
+        bool direct_{true};
+        std::uint64_t motionChecks_{0};  ///< motion checks so far (solve() evaluates the PTC after each)
+        unsigned maxSamples_{0};         ///< 0: unlimited (until the termination condition)
+        unsigned seed_{0};               ///< 0: Halton shift from OMPL's RNG
     };
 }  // namespace ropras::ompl_ext
 

@@ -1,0 +1,196 @@
+// VectorizedRRTConnect: its float block nearest-neighbour scan against a double brute force, the direct start-goal
+// connection, tree storage reused across clear(), and determinism with a fixed seed.
+#include <gtest/gtest.h>
+
+#include <ompl/base/PlannerData.h>
+#include <ompl/base/PlannerTerminationCondition.h>
+#include <ompl/util/Console.h>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <random>
+
+#include "../../ompl_ext/src/NodeBlocks.h"
+#include "PointRobotUrdf.h"
+#include "ropras/core/Error.h"
+#include "ropras/ompl_ext/PlanningContext.h"
+#include "ropras/ompl_ext/VectorizedRRTConnect.h"
+
+namespace fs = std::filesystem;
+using namespace ropras::ompl_ext;
+
+namespace
+{
+    double distSq(const double *a, const double *b, std::size_t dof)
+    {
+        double d = 0.0;
+        for (std::size_t k = 0; k < dof; ++k)
+            d += (a[k] - b[k]) * (a[k] - b[k]);
+        return d;
+    }
+
+    std::string writePointRobotUrdf()
+    {
+        return ropras::ompl_ext::test::writePointRobotUrdf("ropras_point_robot_vrrtc_test.urdf");
+    }
+
+    /// point robot from (0.1, 0.1) to (0.9, 0.1); with \a wall a wall at x = 0.5 up to y = 0.7 blocks the line
+    PlanningContext pointContext(bool wall, const std::map<std::string, std::string> &params)
+    {
+        auto env = std::make_shared<Environment>();
+        if (wall)
+        {
+            Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+            pose.translation() = Eigen::Vector3d(0.5, 0.35, 0.0);
+            env->addBox("wall", pose, Eigen::Vector3d(0.05, 0.7, 0.2));
+        }
+        PlanningContextOptions options;
+        options.planner = "VectorizedRRTConnect";
+        options.plannerParams = params;
+        PlanningContext c = makePlanningContext(writePointRobotUrdf(), "", env, RobotModel::Options(), options);
+        ropras::ompl_ext::test::setPointRobotQuery(*c.setup);
+        return c;
+    }
+
+    ompl::base::PlannerStatus solve(PlanningContext &c, double seconds = 2.0)
+    {
+        return c.setup->solve(ompl::base::plannerOrTerminationCondition(
+            ompl::base::timedPlannerTerminationCondition(seconds),
+            ompl::base::exactSolnPlannerTerminationCondition(c.setup->getProblemDefinition())));
+    }
+
+    std::vector<double> pathValues(PlanningContext &c)
+    {
+        std::vector<double> out;
+        for (const ompl::base::State *s : c.setup->getSolutionPath().getStates())
+            for (std::size_t k = 0; k < c.robot->dof(); ++k)
+                out.push_back(s->as<ompl::base::RealVectorStateSpace::StateType>()->values[k]);
+        return out;
+    }
+}  // namespace
+
+TEST(NodeBlocks, NearestMatchesDoubleBruteForce)
+{
+    // Random trees of 1..70 nodes (partial and several blocks) in 2, 7 and 13 dimensions: the float scan's pick
+    // is the double nearest, or within float rounding of it; exact duplicates resolve to the earliest node.
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-3.0, 3.0);
+    int exact = 0, total = 0;
+    for (std::size_t dof : {2u, 7u, 13u})
+        for (std::size_t n = 1; n <= 70; n += 3)
+        {
+            NodeBlocks blocks;
+            blocks.reset(dof);
+            std::vector<double> nodes(n * dof);
+            for (double &v : nodes)
+                v = u(rng);
+            for (std::size_t i = 0; i < n; ++i)
+                blocks.add(nodes.data() + i * dof);
+            ASSERT_EQ(blocks.size(), n);
+            for (int trial = 0; trial < 40; ++trial)
+            {
+                std::vector<double> q(dof);
+                for (double &v : q)
+                    v = u(rng);
+                std::size_t brute = 0;
+                for (std::size_t i = 1; i < n; ++i)
+                    if (distSq(nodes.data() + i * dof, q.data(), dof) <
+                        distSq(nodes.data() + brute * dof, q.data(), dof))
+                        brute = i;
+                const std::size_t got = blocks.nearest(q.data());
+                ASSERT_LT(got, n);
+                const double dBrute = distSq(nodes.data() + brute * dof, q.data(), dof);
+                const double dGot = distSq(nodes.data() + got * dof, q.data(), dof);
+                EXPECT_LE(dGot, dBrute * (1.0 + 1e-5) + 1e-6) << "dof " << dof << ", " << n << " nodes";
+                exact += got == brute ? 1 : 0;
+                ++total;
+            }
+        }
+    EXPECT_GE(exact, total * 99 / 100) << "float rounding should decide only near-ties";
+
+    // duplicates: the earliest of equal nodes wins, also across blocks
+    NodeBlocks dup;
+    dup.reset(3);
+    const double far[3] = {2.0, 2.0, 2.0}, near[3] = {0.1, 0.2, 0.3};
+    for (int i = 0; i < 11; ++i)
+        dup.add(far);
+    dup.add(near);
+    for (int i = 0; i < 9; ++i)
+        dup.add(near);
+    const double q[3] = {0.0, 0.0, 0.0};
+    EXPECT_EQ(dup.nearest(q), 11u);
+    // clear() forgets the nodes; a NaN query still returns a valid index
+    dup.clear();
+    EXPECT_EQ(dup.size(), 0u);
+    dup.add(far);
+    dup.add(near);
+    EXPECT_EQ(dup.nearest(q), 1u);
+    const double nanQ[3] = {std::nan(""), 0.0, 0.0};
+    EXPECT_LT(dup.nearest(nanQ), dup.size());
+}
+
+TEST(VectorizedRRTConnect, DirectConnectionWhenTheStraightMotionIsFree)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    // free space: one motion check, the path is start -> goal
+    PlanningContext free = pointContext(false, {{"seed", "5"}});
+    ASSERT_EQ(solve(free), ompl::base::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_EQ(free.setup->getSolutionPath().getStateCount(), 2u);
+    EXPECT_TRUE(free.setup->getSolutionPath().check());
+    ompl::base::PlannerData freeData(free.spaceInformation());
+    free.setup->getPlannerData(freeData);
+    EXPECT_EQ(freeData.numVertices(), 2u) << "no tree grew";
+
+    // direct = 0: the trees grow (range 0.1 needs several extensions), still a valid path
+    PlanningContext grown = pointContext(false, {{"seed", "5"}, {"direct", "0"}, {"range", "0.1"}});
+    ASSERT_EQ(solve(grown), ompl::base::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_TRUE(grown.setup->getSolutionPath().check());
+    EXPECT_GT(grown.setup->getSolutionPath().getStateCount(), 2u);
+
+    // a wall across the straight line: the direct check fails, the path goes around it
+    PlanningContext walled = pointContext(true, {{"seed", "5"}});
+    ASSERT_EQ(solve(walled), ompl::base::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_TRUE(walled.setup->getSolutionPath().check());
+    EXPECT_GT(walled.setup->getSolutionPath().getStateCount(), 2u);
+    double maxY = 0.0;
+    for (const ompl::base::State *s : walled.setup->getSolutionPath().getStates())
+        maxY = std::max(maxY, s->as<ompl::base::RealVectorStateSpace::StateType>()->values[1]);
+    EXPECT_GT(maxY, 0.7) << "the path must pass through the gap above the wall";
+}
+
+TEST(VectorizedRRTConnect, SameSeedSamePathAcrossInstancesAndClear)
+{
+    // Two planners with the same seed return the same path; after clear() the reused tree storage holds no stale
+    // nodes (every path is valid and the planner data only holds the new query's trees).
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    const std::map<std::string, std::string> params{{"seed", "9"}, {"range", "0.15"}};
+    PlanningContext a = pointContext(true, params), b = pointContext(true, params);
+    ASSERT_EQ(solve(a), ompl::base::PlannerStatus::EXACT_SOLUTION);
+    ASSERT_EQ(solve(b), ompl::base::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_EQ(pathValues(a), pathValues(b));
+    ompl::base::PlannerData first(a.spaceInformation());
+    a.setup->getPlannerData(first);
+    for (int query = 0; query < 5; ++query)
+    {
+        a.setup->clear();
+        ASSERT_EQ(solve(a), ompl::base::PlannerStatus::EXACT_SOLUTION) << "query " << query;
+        EXPECT_TRUE(a.setup->getSolutionPath().check());
+        ompl::base::PlannerData data(a.spaceInformation());
+        a.setup->getPlannerData(data);
+        EXPECT_EQ(data.numStartVertices(), 1u);
+        EXPECT_EQ(data.numGoalVertices(), 1u);
+        EXPECT_EQ(data.numEdges() + 2, data.numVertices()) << "two trees: every node but the roots has a parent";
+    }
+}
+
+TEST(VectorizedRRTConnect, RejectsBadSettings)
+{
+    PlanningContext c = pointContext(false, {});
+    auto planner = std::make_shared<VectorizedRRTConnect>(c.spaceInformation());
+    planner->setRange(std::numeric_limits<double>::quiet_NaN());
+    c.setup->setPlanner(planner);
+    EXPECT_THROW(c.setup->setup(), ropras::Error);
+    planner->setRange(-1.0);
+    EXPECT_THROW(planner->setup(), ropras::Error);
+}
