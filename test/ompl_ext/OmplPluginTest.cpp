@@ -4,9 +4,11 @@
 
 #include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/PlannerTerminationCondition.h>
+#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 #include <atomic>
+#include <climits>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -305,8 +307,10 @@ TEST(OmplPlugin, RegistryCreatesEveryPlannerAndRejectsBadNames)
 
 namespace
 {
-    /// solves 2 problems per MBM category with \a planner; returns the number solved (out of 14)
-    int solveMbmSample(const std::string &planner, double timeLimit)
+    /** \brief Solves 2 problems per MBM category with \a planner; returns the number solved (out of 14). Each
+        solve stops at an exact solution, after \a iterations evaluations of the termination condition (0: no
+        such bound) or after \a timeLimit seconds, whichever comes first. */
+    int solveMbmSample(const std::string &planner, unsigned iterations, double timeLimit)
     {
         const char *categories[] = {"bookshelf_small", "bookshelf_tall",  "bookshelf_thin", "box", "cage",
                                     "table_pick",      "table_under_pick"};
@@ -328,8 +332,10 @@ namespace
                 }
                 c.setup->setStartAndGoalStates(start, goal);
                 c.setup->setup();
+                ompl::base::IterationTerminationCondition budget(iterations > 0 ? iterations : UINT_MAX);
                 auto ptc = ompl::base::plannerOrTerminationCondition(
-                    ompl::base::timedPlannerTerminationCondition(timeLimit),
+                    ompl::base::plannerOrTerminationCondition(ompl::base::timedPlannerTerminationCondition(timeLimit),
+                                                              budget),
                     ompl::base::exactSolnPlannerTerminationCondition(c.setup->getProblemDefinition()));
                 if (c.setup->solve(ptc) == ompl::base::PlannerStatus::EXACT_SOLUTION &&
                     c.setup->getSolutionPath().check())
@@ -339,7 +345,15 @@ namespace
     }
 }  // namespace
 
-class MbmPlanners : public ::testing::TestWithParam<std::pair<const char *, int>>
+/// a planner, how many of the 14 problems it must solve, and its iteration budget per problem (0: 2 s instead)
+struct MbmPlannerCase
+{
+    const char *planner;
+    int minSolved;
+    unsigned iterations;
+};
+
+class MbmPlanners : public ::testing::TestWithParam<MbmPlannerCase>
 {
 };
 
@@ -347,22 +361,30 @@ TEST_P(MbmPlanners, SolvesMbmProblemsWithFixedSeeds)
 {
     REQUIRE_SHARED();
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
-    const auto [planner, minSolved] = GetParam();
+    const MbmPlannerCase &param = GetParam();
+    const char *planner = param.planner;
+    const int minSolved = param.minSolved;
     ompl::RNG::setSeed(42);  // each test runs in its own process under ctest
-    const int solved = solveMbmSample(planner, 2.0);
+    // with an iteration budget the outcome depends on the seeds only, not on the machine's speed; the 60 s bound
+    // only guards against a hang
+    const int solved = solveMbmSample(planner, param.iterations, param.iterations > 0 ? 60.0 : 2.0);
     RecordProperty("solved", solved);
     EXPECT_GE(solved, minSolved) << planner << " solved " << solved << "/14";
 }
 
-// Success thresholds out of 14 problems (2 per category), 2 s each; no wall-clock assertion. Measured here
-// (2026-11, this machine): RRTConnect 14, VectorizedRRTConnect 14, LBKPIECE1 14, BiTRRT 14, PRM 10, BITstar 10,
-// KPIECE1 9: the thresholds leave a margin for a loaded CI machine.
+// Success thresholds out of 14 problems (2 per category); no wall-clock assertion. Planners that evaluate the
+// termination condition once per iteration get an iteration budget, so that their result does not depend on the
+// machine's load (KPIECE1 solved 6/14 within 2 s on a slow portable build). PRM (roadmap thread) and BITstar
+// (batches) evaluate it too rarely for a budget to be cheap and keep 2 s per problem. Measured here (2026-11-22):
+// RRTConnect 14, VectorizedRRTConnect 14, LBKPIECE1 14, BiTRRT 14, KPIECE1 11 (the same in repeated runs); PRM
+// 12, BITstar 9 within 2 s.
 INSTANTIATE_TEST_SUITE_P(Planners, MbmPlanners,
-                         ::testing::Values(std::make_pair("RRTConnect", 14), std::make_pair("VectorizedRRTConnect", 14),
-                                           std::make_pair("PRM", 8), std::make_pair("KPIECE1", 7),
-                                           std::make_pair("LBKPIECE1", 10), std::make_pair("BiTRRT", 12),
-                                           std::make_pair("BITstar", 8)),
-                         [](const auto &info) { return std::string(info.param.first); });
+                         ::testing::Values(MbmPlannerCase{"RRTConnect", 14, 20000},
+                                           MbmPlannerCase{"VectorizedRRTConnect", 14, 20000},
+                                           MbmPlannerCase{"PRM", 8, 0}, MbmPlannerCase{"KPIECE1", 9, 100000},
+                                           MbmPlannerCase{"LBKPIECE1", 12, 20000}, MbmPlannerCase{"BiTRRT", 12, 20000},
+                                           MbmPlannerCase{"BITstar", 8, 0}),
+                         [](const auto &info) { return std::string(info.param.planner); });
 
 namespace
 {
