@@ -40,9 +40,9 @@
 #include <ompl/geometric/planners/sst/SST.h>
 #include <ompl/geometric/planners/stride/STRIDE.h>
 #include <mutex>
-#include <sstream>
 
 #include "ropras/core/Error.h"
+#include "ropras/core/NameList.h"
 
 namespace ropras::ompl_ext
 {
@@ -52,14 +52,6 @@ namespace ropras::ompl_ext
         ompl::base::PlannerAllocator make()
         {
             return [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<P>(si); };
-        }
-
-        std::string join(const std::vector<std::string> &names)
-        {
-            std::ostringstream out;
-            for (std::size_t i = 0; i < names.size(); ++i)
-                out << (i ? ", " : "") << names[i];
-            return out.str();
         }
 
         std::mutex registryMutex;
@@ -159,7 +151,7 @@ namespace ropras::ompl_ext
                 base = it->second;
         }
         if (!base)
-            throw Error("unknown planner '" + name + "'; known planners: " + join(names()));
+            throw Error("unknown planner '" + name + "'; known planners: " + joinNames(names()));
         return [base, params](const ompl::base::SpaceInformationPtr &si)
         {
             ompl::base::PlannerPtr planner = base(si);
@@ -185,7 +177,7 @@ namespace ropras::ompl_ext
                 std::vector<std::string> known;
                 planner.params().getParamNames(known);
                 throw Error("planner " + planner.getName() + " has no parameter '" + key +
-                            "'; its parameters: " + join(known));
+                            "'; its parameters: " + joinNames(known));
             }
             if (!planner.params().setParam(key, value))
                 throw Error("planner " + planner.getName() + ": cannot set parameter '" + key + "' to '" + value + "'");

@@ -1,6 +1,7 @@
 #include "ropras/pomdp/ModelRegistry.h"
 
 #include "ropras/core/Error.h"
+#include "ropras/core/NameList.h"
 #include "ropras/pomdp/Tiger.h"
 
 namespace ropras::pomdp
@@ -24,12 +25,7 @@ namespace ropras::pomdp
         const auto it = entries_.find(name);
         if (it == entries_.end())
         {
-            std::string known;
-            for (const auto &entry : entries_)
-            {
-                known += (known.empty() ? "" : ", ") + entry.first;
-            }
-            throw Error("unknown model \"" + name + "\" (known: " + known + ")");
+            throw Error("unknown model \"" + name + "\" (known: " + joinKeys(entries_) + ")");
         }
         return it->second;
     }

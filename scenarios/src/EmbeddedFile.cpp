@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "ropras/core/Error.h"
+#include "ropras/core/NameList.h"
 #include "ropras/scenarios/ScenarioRegistry.h"
 
 namespace ropras::scenarios
@@ -18,12 +19,7 @@ namespace ropras::scenarios
         const auto it = table.find(path);
         if (it == table.end())
         {
-            std::string known;
-            for (const auto &entry : table)
-            {
-                known += (known.empty() ? "" : ", ") + entry.first;
-            }
-            throw Error("no embedded scenario file \"" + path + "\" (available: " + known + ")");
+            throw Error("no embedded scenario file \"" + path + "\" (available: " + joinKeys(table) + ")");
         }
         return it->second;
     }

@@ -4,6 +4,7 @@
 
 #include "BuiltinScenarios.h"
 #include "ropras/core/Error.h"
+#include "ropras/core/NameList.h"
 
 namespace ropras::scenarios
 {
@@ -26,12 +27,7 @@ namespace ropras::scenarios
         const auto it = entries_.find(name);
         if (it == entries_.end())
         {
-            std::string known;
-            for (const auto &entry : entries_)
-            {
-                known += (known.empty() ? "" : ", ") + entry.first;
-            }
-            throw Error("unknown scenario \"" + name + "\" (known: " + known + ")");
+            throw Error("unknown scenario \"" + name + "\" (known: " + joinKeys(entries_) + ")");
         }
         return it->second;
     }

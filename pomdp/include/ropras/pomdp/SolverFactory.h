@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ropras/core/Error.h"
+#include "ropras/core/NameList.h"
 #include "ropras/pomdp/BPlanSolver.h"
 #include "ropras/pomdp/ParameterMap.h"
 #include "ropras/pomdp/PomcpSolver.h"
@@ -162,12 +163,7 @@ namespace ropras::pomdp
         const auto it = table.find(name);
         if (it == table.end())
         {
-            std::string known;
-            for (const auto &entry : table)
-            {
-                known += (known.empty() ? "" : ", ") + entry.first;
-            }
-            throw Error("unknown solver \"" + name + "\" (known: " + known + ")");
+            throw Error("unknown solver \"" + name + "\" (known: " + joinKeys(table) + ")");
         }
         return it->second(components, params);
     }
