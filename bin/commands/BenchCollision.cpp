@@ -298,6 +298,13 @@ namespace
         std::cout << "robot " << robot->name() << " (" << dof << " dof, " << robot->spheres().size()
                   << " spheres), backend " << simdBackendName(checker.backend()) << ", " << scenes.size() << " scenes, "
                   << a.configs << " configs/scene, median of " << a.repeat << " repetitions\n";
+        std::size_t allSelfPairs = 0;
+        for (const auto &pair : robot->selfCollisionPairs())
+            allSelfPairs +=
+                static_cast<std::size_t>(robot->collisionLinks()[static_cast<std::size_t>(pair.first)].sphereCount) *
+                static_cast<std::size_t>(robot->collisionLinks()[static_cast<std::size_t>(pair.second)].sphereCount);
+        std::cout << "self-collision sphere pairs tested: " << checker.selfSpherePairs() << " of " << allSelfPairs
+                  << " (the others cannot touch within the joint limits)\n";
         std::cout << std::left << std::setw(36) << "measurement" << std::right << std::setw(14) << "ns" << std::setw(12)
                   << "samples" << '\n';
         for (const Row &r : rows)

@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "EnclosingSphere.h"
 #include "ropras/core/Error.h"
+#include "ropras/ompl_ext/SphereReach.h"
 #include "simd/Avx2Vec.h"
 #include "simd/Kernels.h"
 #include "simd/KinematicProgram.h"
@@ -559,15 +562,48 @@ namespace ropras::ompl_ext
         p.linkRadius.assign(static_cast<std::size_t>(p.linkPadded), 0.0f);
         for (std::size_t l = 0; l < p.links.size(); ++l)
             p.linkRadius[l] = p.links[l].br;
+        // the sphere at each program slot (RobotModel order; padding repeats a sphere of the same link)
+        std::vector<int> sphereOfSlot(p.sx.size(), -1);
+        for (std::size_t s = 0; s < spheres.size(); ++s)
+            sphereOfSlot[static_cast<std::size_t>(p.programIndexOfSphere[s])] = static_cast<int>(s);
+        // self pairs: program links of both collision links, with the sphere pairs that can touch within the joint
+        // limits (reachableSpherePairs); a program pair none of whose sphere pairs can touch is dropped
+        std::vector<std::uint8_t> pairMasks;  // per program pair WIDTH masks: per slot of A, the slots of B
         for (const auto &pair : model.selfCollisionPairs())
         {
             if (pair.first < 0 || pair.second < 0 || pair.first >= static_cast<int>(collisionLinks.size()) ||
                 pair.second >= static_cast<int>(collisionLinks.size()))
                 throw Error("CollisionChecker: robot '" + model.name() + "' self-collision pair (" +
                             std::to_string(pair.first) + ", " + std::to_string(pair.second) + ") out of range");
+            const SphereReach reach = reachableSpherePairs(model, pair.first, pair.second);
+            std::unordered_set<std::uint64_t> reachable;
+            for (const auto &sp : reach.pairs)
+                reachable.insert(static_cast<std::uint64_t>(sp.first) << 32 | static_cast<std::uint32_t>(sp.second));
             for (const int a : linkIndex[static_cast<std::size_t>(pair.first)])
                 for (const int b : linkIndex[static_cast<std::size_t>(pair.second)])
+                {
+                    const simd::LinkOp &la = p.links[static_cast<std::size_t>(a)];
+                    const simd::LinkOp &lb = p.links[static_cast<std::size_t>(b)];
+                    std::uint8_t masks[WIDTH] = {};
+                    bool any = false;
+                    for (int i = 0; i < la.count; ++i)
+                        for (int j = 0; j < lb.count; ++j)
+                        {
+                            const auto sa =
+                                static_cast<std::uint64_t>(sphereOfSlot[static_cast<std::size_t>(la.first + i)]);
+                            const auto sb =
+                                static_cast<std::uint32_t>(sphereOfSlot[static_cast<std::size_t>(lb.first + j)]);
+                            if (reachable.count(sa << 32 | sb) != 0)
+                            {
+                                masks[i] = static_cast<std::uint8_t>(masks[i] | 1u << j);
+                                any = true;
+                            }
+                        }
+                    if (!any)
+                        continue;
                     p.selfPairs.emplace_back(a, b);
+                    pairMasks.insert(pairMasks.end(), masks, masks + WIDTH);
+                }
         }
 
         // link groups: consecutive links, a new group once the current one has `size` links and the frame
@@ -585,16 +621,33 @@ namespace ropras::ompl_ext
             groupOf[l] = static_cast<int>(p.groups.size()) - 1;
         }
         p.groupOfLink = groupOf;
-        // self pairs sorted by the groups of their links; one range per group pair
-        std::stable_sort(p.selfPairs.begin(), p.selfPairs.end(),
-                         [&](const std::pair<int, int> &x, const std::pair<int, int> &y)
-                         {
-                             const auto gx = std::make_pair(groupOf[static_cast<std::size_t>(x.first)],
-                                                            groupOf[static_cast<std::size_t>(x.second)]);
-                             const auto gy = std::make_pair(groupOf[static_cast<std::size_t>(y.first)],
-                                                            groupOf[static_cast<std::size_t>(y.second)]);
-                             return gx < gy;
-                         });
+        // self pairs sorted by the groups of their links (their sphere masks along); one range per group pair
+        {
+            std::vector<std::size_t> order(p.selfPairs.size());
+            for (std::size_t k = 0; k < order.size(); ++k)
+                order[k] = k;
+            const auto groupsOf = [&](std::size_t k)
+            {
+                return std::make_pair(groupOf[static_cast<std::size_t>(p.selfPairs[k].first)],
+                                      groupOf[static_cast<std::size_t>(p.selfPairs[k].second)]);
+            };
+            std::stable_sort(order.begin(), order.end(),
+                             [&](std::size_t x, std::size_t y) { return groupsOf(x) < groupsOf(y); });
+            std::vector<std::pair<int, int>> sorted;
+            for (const std::size_t k : order)
+            {
+                sorted.push_back(p.selfPairs[k]);
+                const std::uint8_t *m = pairMasks.data() + WIDTH * k;
+                unsigned aMask = 0u;
+                for (int i = 0; i < WIDTH; ++i)
+                {
+                    p.selfPairSphereMasks.push_back(m[i]);
+                    aMask |= (m[i] != 0 ? 1u : 0u) << i;
+                }
+                p.selfPairSlotsA.push_back(static_cast<std::uint8_t>(aMask));
+            }
+            p.selfPairs = std::move(sorted);
+        }
         for (std::size_t k = 0; k < p.selfPairs.size(); ++k)
         {
             const int ga = groupOf[static_cast<std::size_t>(p.selfPairs[k].first)];
@@ -691,6 +744,14 @@ namespace ropras::ompl_ext
     int CollisionChecker::width() const noexcept
     {
         return WIDTH;
+    }
+
+    std::size_t CollisionChecker::selfSpherePairs() const noexcept
+    {
+        std::size_t n = 0;
+        for (const std::uint8_t mask : program_->kp.selfPairSphereMasks)
+            n += static_cast<std::size_t>(__builtin_popcount(mask));
+        return n;
     }
 
 #ifdef ROPRAS_SIMD_HAVE_AVX2

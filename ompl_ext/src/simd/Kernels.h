@@ -510,24 +510,26 @@ namespace ropras::ompl_ext::simd
             const LinkOp &b = p.links[static_cast<std::size_t>(pair.second)];
             ensure(p, buf, placed, pair.first);
             ensure(p, buf, placed, pair.second);
-            // spheres of a that reach b's bounding sphere, then those against b's spheres
-            for (int c = a.first; c < a.first + a.padded; c += WIDTH)
+            // spheres of a that can touch b within the joint limits and reach b's bounding sphere, then those
+            // against the spheres of b they can touch (every program link has at most WIDTH spheres: one vector)
+            const std::uint8_t *masks = p.selfPairSphereMasks.data() + static_cast<std::size_t>(WIDTH) * k;
+            unsigned near =
+                boundTest(V::load(wx + a.first), V::load(wy + a.first), V::load(wz + a.first),
+                          V::load(p.sr.data() + a.first), lx[pair.second], ly[pair.second], lz[pair.second], b.br)
+                    .bits() &
+                p.selfPairSlotsA[static_cast<std::size_t>(k)];
+            if (near == 0u)
+                return false;
+            const V bx = V::load(wx + b.first), by = V::load(wy + b.first), bz = V::load(wz + b.first),
+                    br = V::load(p.sr.data() + b.first);
+            while (near != 0u)
             {
-                unsigned near = boundTest(V::load(wx + c), V::load(wy + c), V::load(wz + c), V::load(p.sr.data() + c),
-                                          lx[pair.second], ly[pair.second], lz[pair.second], b.br)
-                                    .bits() &
-                                Mask::firstLanes(a.first + a.count - c).bits();
-                while (near != 0u)
-                {
-                    const int i = c + __builtin_ctz(near);
-                    near &= near - 1u;
-                    const float ri = p.sr[static_cast<std::size_t>(i)];
-                    for (int s = b.first; s < b.first + b.padded; s += WIDTH)
-                        if (boundTest(V::load(wx + s), V::load(wy + s), V::load(wz + s), V::load(p.sr.data() + s),
-                                      wx[i], wy[i], wz[i], ri)
-                                .any())
-                            return true;
-                }
+                const int t = __builtin_ctz(near);
+                near &= near - 1u;
+                const int i = a.first + t;
+                if ((boundTest(bx, by, bz, br, wx[i], wy[i], wz[i], p.sr[static_cast<std::size_t>(i)]).bits() &
+                     masks[t]) != 0u)
+                    return true;
             }
             return false;
         }
@@ -865,17 +867,28 @@ namespace ropras::ompl_ext::simd
                         ensureBatch(p, buf, placed, pair.second);
                         const V bx = V::load(buf + l.lx + W * pair.second), by = V::load(buf + l.ly + W * pair.second),
                                 bz = V::load(buf + l.lz + W * pair.second);
-                        for (int i = a.first; i < a.first + a.count && c != 0u; ++i)
+                        // only the sphere pairs that can touch within the joint limits (selfPairSphereMasks)
+                        const std::uint8_t *masks = p.selfPairSphereMasks.data() + static_cast<std::size_t>(W) * k;
+                        for (unsigned slots = p.selfPairSlotsA[static_cast<std::size_t>(k)]; slots != 0u && c != 0u;
+                             slots &= slots - 1u)
                         {
+                            const int t = __builtin_ctz(slots);
+                            const int i = a.first + t;
                             const V x = V::load(buf + l.sx + W * i), y = V::load(buf + l.sy + W * i),
                                     z = V::load(buf + l.sz + W * i);
                             const float ri = p.sr[static_cast<std::size_t>(i)];
-                            // lanes where sphere i reaches b's bounding sphere
-                            const V ex = x - bx, ey = y - by, ez = z - bz;
-                            const float rb = ri + b.br;
-                            unsigned near = cmpLe(fma(ex, ex, fma(ey, ey, ez * ez)), V::broadcast(rb * rb)).bits() & c;
-                            for (int j = b.first; j < b.first + b.count && near != 0u; ++j)
+                            unsigned partners = masks[t];
+                            unsigned near = c;
+                            if ((partners & (partners - 1u)) != 0u)
                             {
+                                // two or more partners: first the lanes where sphere i reaches b's bounding sphere
+                                const V ex = x - bx, ey = y - by, ez = z - bz;
+                                const float rb = ri + b.br;
+                                near &= cmpLe(fma(ex, ex, fma(ey, ey, ez * ez)), V::broadcast(rb * rb)).bits();
+                            }
+                            for (; partners != 0u && near != 0u; partners &= partners - 1u)
+                            {
+                                const int j = b.first + __builtin_ctz(partners);
                                 const V fx = x - V::load(buf + l.sx + W * j), fy = y - V::load(buf + l.sy + W * j),
                                         fz = z - V::load(buf + l.sz + W * j);
                                 const float rs = ri + p.sr[static_cast<std::size_t>(j)];

@@ -3,6 +3,7 @@
 #define ROPRAS_OMPL_EXT_SIMD_KINEMATIC_PROGRAM_H
 
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -117,6 +118,11 @@ namespace ropras::ompl_ext::simd
         /// per self pair: float (a.br + b.br)^2 and the batch offsets WIDTH * link of both links
         std::vector<float> selfPairReach2;
         std::vector<int> selfPairOffsetA, selfPairOffsetB;
+        /// per self pair WIDTH masks: bit j of mask i set when sphere slot first + i of link A can touch slot
+        /// first + j of link B within the joint limits (reachableSpherePairs); the other sphere pairs never touch
+        std::vector<std::uint8_t> selfPairSphereMasks;
+        /// per self pair: the slots of link A with a non-empty mask (bit i)
+        std::vector<std::uint8_t> selfPairSlotsA;
         std::vector<double> lower, upper;  ///< per variable
         /// per variable: v is valid iff lowerCheck <= v <= upperCheck (finite bounds; +-DBL_MAX when unbounded)
         std::vector<double> lowerCheck, upperCheck;

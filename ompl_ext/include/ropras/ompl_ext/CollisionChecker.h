@@ -41,6 +41,9 @@ namespace ropras::ompl_ext
         SimdBackend backend() const { return backend_; }
         /// configurations per SIMD batch (8 with AVX2)
         int width() const noexcept;
+        /** \brief Sphere pairs the self-collision test examines: those of the robot's self-collision pairs that can
+            touch within the joint limits (reachableSpherePairs); the others never collide and are never tested. */
+        std::size_t selfSpherePairs() const noexcept;
 
         /// one configuration (dof() values)
         bool isValid(const Environment &env, const double *q) const noexcept;
