@@ -648,6 +648,49 @@ namespace ropras::ompl_ext
             }
             p.selfPairs = std::move(sorted);
         }
+        // per pair: the spheres around the members that can touch (much smaller than the link bounds when few
+        // sphere pairs can touch, e.g. the Panda's link5 against link7); used when one is at most 95 % of its bound
+        for (std::size_t k = 0; k < p.selfPairs.size(); ++k)
+        {
+            const simd::LinkOp &la = p.links[static_cast<std::size_t>(p.selfPairs[k].first)];
+            const simd::LinkOp &lb = p.links[static_cast<std::size_t>(p.selfPairs[k].second)];
+            const std::uint8_t *m = p.selfPairSphereMasks.data() + WIDTH * k;
+            unsigned bMask = 0u;
+            std::vector<Sphere> membersA, membersB;
+            for (int i = 0; i < WIDTH; ++i)
+            {
+                bMask |= m[i];
+                if (m[i] != 0)
+                    membersA.push_back({Eigen::Vector3d(p.sx[static_cast<std::size_t>(la.first + i)],
+                                                        p.sy[static_cast<std::size_t>(la.first + i)],
+                                                        p.sz[static_cast<std::size_t>(la.first + i)]),
+                                        p.sr[static_cast<std::size_t>(la.first + i)]});
+            }
+            for (int j = 0; j < WIDTH; ++j)
+                if ((bMask >> j & 1u) != 0u)
+                    membersB.push_back({Eigen::Vector3d(p.sx[static_cast<std::size_t>(lb.first + j)],
+                                                        p.sy[static_cast<std::size_t>(lb.first + j)],
+                                                        p.sz[static_cast<std::size_t>(lb.first + j)]),
+                                        p.sr[static_cast<std::size_t>(lb.first + j)]});
+            float near[2][4];
+            const std::vector<Sphere> *members[2] = {&membersA, &membersB};
+            for (int side = 0; side < 2; ++side)
+            {
+                const Sphere e = enclosingSphere(*members[side]);
+                double bound = e.radius;
+                for (const Sphere &s : *members[side])  // enclosure exactly, then float rounding slack as for links
+                    bound = std::max(bound, (s.center - e.center).norm() + s.radius);
+                near[side][0] = static_cast<float>(e.center.x());
+                near[side][1] = static_cast<float>(e.center.y());
+                near[side][2] = static_cast<float>(e.center.z());
+                near[side][3] = static_cast<float>(bound * (1.0 + 1e-5) + 1e-6);
+            }
+            p.selfPairNear.insert(p.selfPairNear.end(), near[0], near[0] + 4);
+            p.selfPairNear.insert(p.selfPairNear.end(), near[1], near[1] + 4);
+            const float reach = near[0][3] + near[1][3];
+            p.selfPairNearReach2.push_back(reach * reach);
+            p.selfPairUseNear.push_back(near[0][3] <= 0.95f * la.br || near[1][3] <= 0.95f * lb.br ? 1 : 0);
+        }
         for (std::size_t k = 0; k < p.selfPairs.size(); ++k)
         {
             const int ga = groupOf[static_cast<std::size_t>(p.selfPairs[k].first)];

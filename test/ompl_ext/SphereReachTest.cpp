@@ -183,13 +183,20 @@ TEST(SphereReach, CheckerSelfVerdictsMatchAllPairsOnPanda)
     const auto &links = robot->collisionLinks();
     const auto &spheres = robot->spheres();
     std::mt19937 rng(5);
-    std::vector<double> q(robot->dof());
+    const std::size_t dof = robot->dof(), samples = 20000;
+    std::vector<double> qs(samples * dof);
+    for (std::size_t n = 0; n < samples; ++n)
+        for (std::size_t j = 0; j < dof; ++j)
+            qs[n * dof + j] =
+                std::uniform_real_distribution<double>(robot->joints()[j].lower, robot->joints()[j].upper)(rng);
+    // the batch path (8 configurations per call) and the single path, both against the reference
+    std::vector<char> batchVerdicts(samples);
+    checker.isValidBatch(empty, qs.data(), samples, reinterpret_cast<bool *>(batchVerdicts.data()));
     std::size_t invalid = 0, nearContact = 0;
-    for (int n = 0; n < 20000; ++n)
+    for (std::size_t n = 0; n < samples; ++n)
     {
-        for (std::size_t j = 0; j < q.size(); ++j)
-            q[j] = std::uniform_real_distribution<double>(robot->joints()[j].lower, robot->joints()[j].upper)(rng);
-        const auto centres = robot->sphereCentersReference(q.data());
+        const double *q = qs.data() + n * dof;
+        const auto centres = robot->sphereCentersReference(q);
         double minGap = 1e9;
         for (const auto &pair : robot->selfCollisionPairs())
         {
@@ -207,8 +214,9 @@ TEST(SphereReach, CheckerSelfVerdictsMatchAllPairsOnPanda)
             ++nearContact;  // float vs double rounding may decide these either way
             continue;
         }
-        const bool valid = checker.isValid(empty, q.data());
+        const bool valid = checker.isValid(empty, q);
         ASSERT_EQ(valid, minGap > 0.0) << "sample " << n << ", closest sphere gap " << minGap;
+        ASSERT_EQ(batchVerdicts[n] != 0, minGap > 0.0) << "batch, sample " << n << ", closest sphere gap " << minGap;
         invalid += valid ? 0u : 1u;
     }
     EXPECT_GT(invalid, 500u) << "the samples must include self collisions";

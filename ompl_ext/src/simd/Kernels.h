@@ -508,6 +508,17 @@ namespace ropras::ompl_ext::simd
             const auto &pair = p.selfPairs[static_cast<std::size_t>(k)];
             const LinkOp &a = p.links[static_cast<std::size_t>(pair.first)];
             const LinkOp &b = p.links[static_cast<std::size_t>(pair.second)];
+            if (p.selfPairUseNear[static_cast<std::size_t>(k)] != 0)
+            {
+                // the spheres around the members that can touch, placed from the frames (columns c0 c1 c2 t)
+                const float *near = p.selfPairNear.data() + 8 * static_cast<std::size_t>(k);
+                const float *fa = buf + l.frames + 16 * a.frame, *fb = buf + l.frames + 16 * b.frame;
+                const Row4 d =
+                    loadRow(fa) * near[0] + loadRow(fa + 4) * near[1] + loadRow(fa + 8) * near[2] + loadRow(fa + 12) -
+                    (loadRow(fb) * near[4] + loadRow(fb + 4) * near[5] + loadRow(fb + 8) * near[6] + loadRow(fb + 12));
+                if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] > p.selfPairNearReach2[static_cast<std::size_t>(k)])
+                    return false;
+            }
             ensure(p, buf, placed, pair.first);
             ensure(p, buf, placed, pair.second);
             // spheres of a that can touch b within the joint limits and reach b's bounding sphere, then those
@@ -675,6 +686,17 @@ namespace ropras::ompl_ext::simd
                     fma(m[6], vx, fma(m[7], vy, fma(m[8], vz, m[11]))).store(lz + W * li);
                 }
             }
+        }
+
+        /// world position (WIDTH lanes per axis) of the point \a b (3 floats, in the frame stored at \a frame)
+        static void placePointBatch(const float *frame, const float *b, V *out) noexcept
+        {
+            constexpr int W = WIDTH;
+            const V vx = V::broadcast(b[0]), vy = V::broadcast(b[1]), vz = V::broadcast(b[2]);
+            for (int i = 0; i < 3; ++i)
+                out[i] = fma(V::load(frame + W * (3 * i)), vx,
+                             fma(V::load(frame + W * (3 * i + 1)), vy,
+                                 fma(V::load(frame + W * (3 * i + 2)), vz, V::load(frame + W * (9 + i)))));
         }
 
         /// world centres (WIDTH lanes each) of one link's real spheres
@@ -863,6 +885,20 @@ namespace ropras::ompl_ext::simd
                             continue;
                         const LinkOp &a = p.links[static_cast<std::size_t>(pair.first)];
                         const LinkOp &b = p.links[static_cast<std::size_t>(pair.second)];
+                        if (p.selfPairUseNear[static_cast<std::size_t>(k)] != 0)
+                        {
+                            // the spheres around the members that can touch, placed from the frames
+                            const float *near = p.selfPairNear.data() + 8 * static_cast<std::size_t>(k);
+                            V ca[3], cb[3];
+                            placePointBatch(buf + l.frames + 12 * W * a.frame, near, ca);
+                            placePointBatch(buf + l.frames + 12 * W * b.frame, near + 4, cb);
+                            const V dx = ca[0] - cb[0], dy = ca[1] - cb[1], dz = ca[2] - cb[2];
+                            c &= cmpLe(fma(dx, dx, fma(dy, dy, dz * dz)),
+                                       V::broadcast(p.selfPairNearReach2[static_cast<std::size_t>(k)]))
+                                     .bits();
+                            if (c == 0u)
+                                continue;
+                        }
                         ensureBatch(p, buf, placed, pair.first);
                         ensureBatch(p, buf, placed, pair.second);
                         const V bx = V::load(buf + l.lx + W * pair.second), by = V::load(buf + l.ly + W * pair.second),

@@ -123,6 +123,11 @@ namespace ropras::ompl_ext::simd
         std::vector<std::uint8_t> selfPairSphereMasks;
         /// per self pair: the slots of link A with a non-empty mask (bit i)
         std::vector<std::uint8_t> selfPairSlotsA;
+        /** \brief Per self pair, 8 floats: a sphere (x y z r, in A's frame) around the spheres of A that can touch
+            B, and one (in B's frame) around the spheres of B that A can touch; float (rA + rB)^2 in selfPairNearReach2.
+            When the pair's link bounds touch, the batch path tests these first (selfPairUseNear). */
+        std::vector<float> selfPairNear, selfPairNearReach2;
+        std::vector<char> selfPairUseNear;
         std::vector<double> lower, upper;  ///< per variable
         /// per variable: v is valid iff lowerCheck <= v <= upperCheck (finite bounds; +-DBL_MAX when unbounded)
         std::vector<double> lowerCheck, upperCheck;
