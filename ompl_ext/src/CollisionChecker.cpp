@@ -38,22 +38,6 @@ namespace ropras::ompl_ext
             return buffer.data();
         }
 
-        /** \brief Obstacles whose boxes isValidBatch computes once per call (on the stack); more: per batch, on the
-            fly. isMotionValid keeps computing them per batch: an invalid motion often stops at the first obstacle
-            of its first batch, where computing every box up front would cost more than it saves. */
-        constexpr std::size_t CALL_BOXES = 64;
-
-        /** \brief The obstacle boxes of \a env into \a store, once per call; nullptr (collideBatch then computes them
-            per batch) when the environment has more than CALL_BOXES obstacles. */
-        template <class K>
-        const simd::ObstacleBox *callBoxes(const Environment &env, simd::ObstacleBox *store) noexcept
-        {
-            if (K::obstacleCount(env) > CALL_BOXES)
-                return nullptr;
-            K::obstacleBoxes(env, store);
-            return store;
-        }
-
         std::size_t roundUp(std::size_t n)
         {
             return (n + WIDTH - 1) / WIDTH * WIDTH;
@@ -123,9 +107,6 @@ namespace ropras::ompl_ext
             {
                 const auto dof = static_cast<std::size_t>(p.dof);
                 float *buf = threadScratch(std::max(p.batch.total, p.single.total));
-                // the obstacle boxes once per call, not once per batch
-                simd::ObstacleBox store[CALL_BOXES];
-                const simd::ObstacleBox *boxes = callBoxes<K>(env, store);
                 std::size_t nValid = 0;
                 for (std::size_t start = 0; start < count; start += WIDTH)
                 {
@@ -142,7 +123,7 @@ namespace ropras::ompl_ext
                         // every row finite, within its limits and with angles in the float range: no fix-ups
                         K::framesBatch(p, buf);
                         constexpr unsigned all = (1u << WIDTH) - 1u;
-                        const unsigned ok = all & ~K::collideBatch(p, env, buf, all, false, boxes);
+                        const unsigned ok = all & ~K::collideBatch(p, env, buf, all, false);
                         for (std::size_t i = 0; i < n; ++i)
                         {
                             valid[start + i] = ((ok >> i) & 1u) != 0u;
@@ -173,7 +154,7 @@ namespace ropras::ompl_ext
                         putLane(p, qs + row * dof, i, buf + p.batch.q);
                     }
                     K::framesBatch(p, buf);
-                    const unsigned ok = active & ~K::collideBatch(p, env, buf, active, false, boxes);
+                    const unsigned ok = active & ~K::collideBatch(p, env, buf, active, false);
                     for (std::size_t i = 0; i < n; ++i)
                     {
                         valid[start + i] = ((ok >> i) & 1u) != 0u;

@@ -320,6 +320,49 @@ namespace ropras::ompl_ext
         return objects_[static_cast<std::size_t>(id)].pose * shapes[k].pose;
     }
 
+    namespace
+    {
+        ObstacleAabb inflated(float cx, float cy, float cz, float ex, float ey, float ez)
+        {
+            const auto grow = [](float e) { return e * (1.0f + 1e-5f) + 1e-5f; };
+            return {cx, cy, cz, grow(ex), grow(ey), grow(ez)};
+        }
+
+        ObstacleAabb worldBox(const SphereObstacle &o)
+        {
+            return inflated(o.x, o.y, o.z, o.r, o.r, o.r);
+        }
+
+        ObstacleAabb worldBox(const BoxObstacle &o)
+        {
+            // the box axes are the columns of rot: the world half extent along i is sum_j |R_ij| h_j
+            const float *r = o.rot;
+            return inflated(o.cx, o.cy, o.cz, std::abs(r[0]) * o.hx + std::abs(r[1]) * o.hy + std::abs(r[2]) * o.hz,
+                            std::abs(r[3]) * o.hx + std::abs(r[4]) * o.hy + std::abs(r[5]) * o.hz,
+                            std::abs(r[6]) * o.hx + std::abs(r[7]) * o.hy + std::abs(r[8]) * o.hz);
+        }
+
+        ObstacleAabb worldBox(const CylinderObstacle &o)
+        {
+            // axis term |a_i| L/2 plus the rim disc's half extent R sqrt(1 - a_i^2)
+            const auto e = [&](float a)
+            { return std::abs(a) * o.halfLength + o.radius * std::sqrt(std::max(0.0f, 1.0f - a * a)); };
+            return inflated(o.cx, o.cy, o.cz, e(o.ax), e(o.ay), e(o.az));
+        }
+
+        ObstacleAabb worldBox(const CapsuleObstacle &o)
+        {
+            return inflated(o.ax + 0.5f * o.dx, o.ay + 0.5f * o.dy, o.az + 0.5f * o.dz,
+                            0.5f * std::abs(o.dx) + o.radius, 0.5f * std::abs(o.dy) + o.radius,
+                            0.5f * std::abs(o.dz) + o.radius);
+        }
+
+        ObstacleAabb worldBox(const CloudObstacle &o)
+        {
+            return inflated(o.cx, o.cy, o.cz, o.boundRadius, o.boundRadius, o.boundRadius);
+        }
+    }  // namespace
+
     void Environment::writeQueryForm(const Object &object)
     {
         for (std::size_t k = 0; k < object.shapes.size(); ++k)
@@ -332,9 +375,15 @@ namespace ropras::ompl_ext
             switch (shape.type)
             {
                 case ShapeType::Sphere:
-                    spheres_[slot] = {static_cast<float>(c.x()), static_cast<float>(c.y()), static_cast<float>(c.z()),
-                                      static_cast<float>(shape.radius)};
+                {
+                    SphereObstacle &o = spheres_[slot];
+                    o.x = static_cast<float>(c.x());
+                    o.y = static_cast<float>(c.y());
+                    o.z = static_cast<float>(c.z());
+                    o.r = static_cast<float>(shape.radius);
+                    o.aabb = worldBox(o);
                     break;
+                }
                 case ShapeType::Box:
                 {
                     BoxObstacle &b = boxes_[slot];
@@ -348,6 +397,7 @@ namespace ropras::ompl_ext
                     b.hy = static_cast<float>(0.5 * shape.extents.y());
                     b.hz = static_cast<float>(0.5 * shape.extents.z());
                     b.boundRadius = static_cast<float>(0.5 * shape.extents.norm());
+                    b.aabb = worldBox(b);
                     break;
                 }
                 case ShapeType::Cylinder:
@@ -363,6 +413,7 @@ namespace ropras::ompl_ext
                     y.halfLength = static_cast<float>(0.5 * shape.length);
                     y.radius = static_cast<float>(shape.radius);
                     y.boundRadius = static_cast<float>(std::hypot(0.5 * shape.length, shape.radius));
+                    y.aabb = worldBox(y);
                     break;
                 }
                 case ShapeType::Capsule:
@@ -378,6 +429,7 @@ namespace ropras::ompl_ext
                     p.dz = static_cast<float>(d.z());
                     p.radius = static_cast<float>(shape.radius);
                     p.invLengthSq = shape.length > 0.0 ? static_cast<float>(1.0 / (shape.length * shape.length)) : 0.0f;
+                    p.aabb = worldBox(p);
                     break;
                 }
                 case ShapeType::PointCloud:
@@ -402,6 +454,7 @@ namespace ropras::ompl_ext
                         q.boundRadius = static_cast<float>(0.5 * (hi - lo).norm() + shape.cloud->pointRadius() +
                                                            1e-5 * (1.0 + centre.norm() + (hi - lo).norm()));
                     }
+                    q.aabb = worldBox(q);
                     break;
                 }
             }

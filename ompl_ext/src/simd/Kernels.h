@@ -179,50 +179,13 @@ namespace ropras::ompl_ext::simd
         float lo[3], hi[3];
     };
 
-    /** \brief World axis-aligned box around an obstacle (centre, half extents), slightly enlarged so that float
-        rounding can never make it cull a contact the exact test finds. */
-    struct ObstacleBox
-    {
-        float cx, cy, cz, ex, ey, ez;
-    };
+    /// world axis-aligned box around an obstacle (Environment computes it with the query form)
+    using ObstacleBox = ObstacleAabb;
 
-    inline ObstacleBox inflated(float cx, float cy, float cz, float ex, float ey, float ez) noexcept
+    template <class O>
+    inline const ObstacleBox &obstacleBox(const O &o) noexcept
     {
-        const auto grow = [](float e) { return e * (1.0f + 1e-5f) + 1e-5f; };
-        return {cx, cy, cz, grow(ex), grow(ey), grow(ez)};
-    }
-
-    inline ObstacleBox obstacleBox(const SphereObstacle &o) noexcept
-    {
-        return inflated(o.x, o.y, o.z, o.r, o.r, o.r);
-    }
-
-    inline ObstacleBox obstacleBox(const BoxObstacle &o) noexcept
-    {
-        // the box axes are the columns of rot: the world half extent along i is sum_j |R_ij| h_j
-        const float *r = o.rot;
-        return inflated(o.cx, o.cy, o.cz, std::abs(r[0]) * o.hx + std::abs(r[1]) * o.hy + std::abs(r[2]) * o.hz,
-                        std::abs(r[3]) * o.hx + std::abs(r[4]) * o.hy + std::abs(r[5]) * o.hz,
-                        std::abs(r[6]) * o.hx + std::abs(r[7]) * o.hy + std::abs(r[8]) * o.hz);
-    }
-
-    inline ObstacleBox obstacleBox(const CylinderObstacle &o) noexcept
-    {
-        // axis term |a_i| L/2 plus the rim disc's half extent R sqrt(1 - a_i^2)
-        const auto e = [&](float a)
-        { return std::abs(a) * o.halfLength + o.radius * std::sqrt(std::max(0.0f, 1.0f - a * a)); };
-        return inflated(o.cx, o.cy, o.cz, e(o.ax), e(o.ay), e(o.az));
-    }
-
-    inline ObstacleBox obstacleBox(const CapsuleObstacle &o) noexcept
-    {
-        return inflated(o.ax + 0.5f * o.dx, o.ay + 0.5f * o.dy, o.az + 0.5f * o.dz, 0.5f * std::abs(o.dx) + o.radius,
-                        0.5f * std::abs(o.dy) + o.radius, 0.5f * std::abs(o.dz) + o.radius);
-    }
-
-    inline ObstacleBox obstacleBox(const CloudObstacle &o) noexcept
-    {
-        return inflated(o.cx, o.cy, o.cz, o.boundRadius, o.boundRadius, o.boundRadius);
+        return o.aabb;
     }
 
     /// lanes whose sphere (x, y, z, r) touches the box: the exact sphere-versus-axis-aligned-box test
@@ -943,40 +906,11 @@ namespace ropras::ompl_ext::simd
             return hit;
         }
 
-        /// number of obstacles collideBatch visits (every primitive of every type)
-        static std::size_t obstacleCount(const Environment &env) noexcept
-        {
-            return env.spheres().size() + env.boxes().size() + env.cylinders().size() + env.capsules().size() +
-                   env.clouds().size();
-        }
-
-        /// the boxes of every obstacle, in the order collideBatch visits them (obstacleCount entries)
-        static void obstacleBoxes(const Environment &env, ObstacleBox *out) noexcept
-        {
-            for (const auto &o : env.spheres())
-                *out++ = obstacleBox(o);
-            for (const auto &o : env.boxes())
-                *out++ = obstacleBox(o);
-            for (const auto &o : env.cylinders())
-                *out++ = obstacleBox(o);
-            for (const auto &o : env.capsules())
-                *out++ = obstacleBox(o);
-            for (const auto &o : env.clouds())
-                *out++ = obstacleBox(o);
-        }
-
         /** \brief Collision lanes of a batch after framesBatch. \a active: lanes to check (bits); stops as soon
             as every active lane collides, or at the first collision when \a stopOnAny. */
         static unsigned collideBatch(const KinematicProgram &p, const Environment &env, float *buf, unsigned active,
-                                     bool stopOnAny, const ObstacleBox *boxes = nullptr) noexcept
+                                     bool stopOnAny) noexcept
         {
-            // the obstacle boxes: precomputed by the caller for a whole call (obstacleBoxes), else on the fly
-            std::size_t at = 0;
-            const auto boxOf = [&](const auto &o)
-            {
-                const std::size_t i = at++;
-                return boxes != nullptr ? boxes[i] : obstacleBox(o);
-            };
             Placed placed;
             if (p.links.size() > 64)
                 placeAllBatch(p, buf, placed);
@@ -1009,7 +943,7 @@ namespace ropras::ompl_ext::simd
             const auto sweep = [&](const auto &obstacles)
             {
                 for (const auto &o : obstacles)
-                    if (obstacle(boxOf(o), [&](const V &x, const V &y, const V &z, const V &r, unsigned)
+                    if (obstacle(obstacleBox(o), [&](const V &x, const V &y, const V &z, const V &r, unsigned)
                                  { return hitObstacle(x, y, z, r, o).bits(); }))
                         return true;
                 return false;
@@ -1018,7 +952,7 @@ namespace ropras::ompl_ext::simd
                 return hit;
             for (const CloudObstacle &o : env.clouds())
             {
-                const ObstacleBox ob = boxOf(o);
+                const ObstacleBox ob = obstacleBox(o);
                 if (o.boundRadius < 0.0f)
                     continue;
                 if (obstacle(ob,

@@ -44,9 +44,19 @@ namespace ropras::ompl_ext
     };
 
     // Query form: float, world frame, what the collision kernels read.
+
+    /** \brief World axis-aligned box around a primitive (centre, half extents), enlarged by 1e-5 (relative) +
+        1e-5 m so that float rounding can never make it cull a contact the exact test finds. Computed with the rest
+        of the query form (when an object is added or moved), read by every check. */
+    struct ObstacleAabb
+    {
+        float cx, cy, cz, ex, ey, ez;
+    };
+
     struct SphereObstacle
     {
         float x, y, z, r;
+        ObstacleAabb aabb;
     };
     struct BoxObstacle  ///< p_box = R^T (p - c); rot is R row-major (columns are the box axes in the world)
     {
@@ -54,6 +64,7 @@ namespace ropras::ompl_ext
         float rot[9];
         float hx, hy, hz;
         float boundRadius;  ///< radius of the box's bounding sphere around c
+        ObstacleAabb aabb;
     };
     struct CylinderObstacle  ///< exact solid cylinder: centre, unit axis, half length, radius
     {
@@ -61,6 +72,7 @@ namespace ropras::ompl_ext
         float ax, ay, az;
         float halfLength, radius;
         float boundRadius;
+        ObstacleAabb aabb;
     };
     struct CapsuleObstacle  ///< segment from a to a + d (d not unit), radius
     {
@@ -68,12 +80,14 @@ namespace ropras::ompl_ext
         float dx, dy, dz;
         float radius;
         float invLengthSq;  ///< 1 / |d|^2, 0 for a degenerate (sphere) capsule
+        ObstacleAabb aabb;
     };
     struct CloudObstacle
     {
         std::shared_ptr<const PointCloud> cloud;
         Eigen::Isometry3f worldToCloud;
         float cx, cy, cz, boundRadius;  ///< world bounding sphere of the inflated cloud
+        ObstacleAabb aabb;
     };
 
     /** \brief A set of named obstacles. Value type: copying is cheap (primitives are a few floats each,
