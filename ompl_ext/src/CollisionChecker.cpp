@@ -55,15 +55,11 @@ namespace ropras::ompl_ext
 
         bool withinLimits(const KinematicProgram &p, const double *q) noexcept
         {
+            // lowerCheck / upperCheck are +-DBL_MAX for continuous joints: NaN fails both comparisons, +-inf one
+            const double *lo = p.lowerCheck.data(), *hi = p.upperCheck.data();
             for (int j = 0; j < p.dof; ++j)
-            {
-                const double v = q[j];
-                const auto k = static_cast<std::size_t>(j);
-                if (!std::isfinite(v))
+                if (!(q[j] >= lo[j] && q[j] <= hi[j]))
                     return false;
-                if (!p.unbounded[k] && (v < p.lower[k] || v > p.upper[k]))
-                    return false;
-            }
             return true;
         }
 
