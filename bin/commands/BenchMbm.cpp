@@ -368,9 +368,14 @@ namespace
                             Run run;
                             run.category = problem.category;
                             run.problem = problem.index;
-                            auto ptc = ob::plannerOrTerminationCondition(
-                                ob::timedPlannerTerminationCondition(a.time),
-                                ob::exactSolnPlannerTerminationCondition(ss.getProblemDefinition()));
+                            // time limit or exact solution, in one non-threaded condition: the same as
+                            // plannerOr(timed, exactSoln) with one evaluation instead of three (planners poll it
+                            // once per iteration, inside the timed region)
+                            const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                                                     std::chrono::duration<double>(a.time));
+                            const ob::ProblemDefinition *pdef = ss.getProblemDefinition().get();
+                            const ob::PlannerTerminationCondition ptc(
+                                [deadline, pdef] { return pdef->hasExactSolution() || Clock::now() > deadline; });
                             const auto t0 = Clock::now();
                             const ob::PlannerStatus status = ss.solve(ptc);
                             run.planUs = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();

@@ -1,6 +1,7 @@
 #ifndef ROPRAS_OMPL_EXT_NODE_BLOCKS_H
 #define ROPRAS_OMPL_EXT_NODE_BLOCKS_H
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -56,8 +57,13 @@ namespace ropras::ompl_ext
             float qf[MAX_DOF];
             for (std::size_t k = 0; k < dof_; ++k)
                 qf[k] = static_cast<float>(q[k]);
-            alignas(32) float bestD[LANES];
-            alignas(32) std::int32_t bestI[LANES];
+            return nearest(qf);
+        }
+
+        /// the same for a query already in float (the planner converts its samples once, while drawing them);
+        /// \a distSq, when non-null, receives the float squared distance to the node returned
+        std::size_t nearest(const float *qf, float *distSq = nullptr) const noexcept
+        {
             const std::size_t blocks = (size_ + LANES - 1) / LANES;
             const float *block = values_.data();
 #if defined(__AVX2__) && defined(__FMA__)
@@ -80,9 +86,23 @@ namespace ropras::ompl_ext
                     _mm256_blendv_ps(_mm256_castsi256_ps(bestIv), _mm256_castsi256_ps(index), better));
                 index = _mm256_add_epi32(index, step);
             }
-            _mm256_store_ps(bestD, bestDv);
+            // Reduce in registers: the smallest distance, then among the lanes holding it the smallest index
+            // (one lane almost always; a loop over the tied lanes otherwise).
+            __m256 m = _mm256_min_ps(bestDv, _mm256_permute_ps(bestDv, 0xb1));  // swap neighbours
+            m = _mm256_min_ps(m, _mm256_permute_ps(m, 0x4e));                   // swap pairs
+            m = _mm256_min_ps(m, _mm256_permute2f128_ps(m, m, 0x01));           // swap halves
+            unsigned tied = static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(bestDv, m, _CMP_EQ_OQ)));
+            alignas(32) std::int32_t bestI[LANES];
             _mm256_store_si256(reinterpret_cast<__m256i *>(bestI), bestIv);
+            if (tied == 0u)  // NaN query: no lane ever improved on infinity (all equal) or NaN compares unequal
+                tied = 1u;
+            std::size_t best = static_cast<std::size_t>(bestI[__builtin_ctz(tied)]);
+            for (tied &= tied - 1u; tied != 0u; tied &= tied - 1u)
+                best = std::min(best, static_cast<std::size_t>(bestI[__builtin_ctz(tied)]));
+            const float bestDist = _mm_cvtss_f32(_mm256_castps256_ps128(m));
 #else
+            float bestD[LANES];
+            std::int32_t bestI[LANES];
             for (std::size_t l = 0; l < LANES; ++l)
             {
                 bestD[l] = std::numeric_limits<float>::infinity();
@@ -103,7 +123,6 @@ namespace ropras::ompl_ext
                         bestI[l] = static_cast<std::int32_t>(b * LANES + l);
                     }
                 }
-#endif
             std::size_t best = static_cast<std::size_t>(bestI[0]);
             float bestDist = bestD[0];
             for (std::size_t l = 1; l < LANES; ++l)
@@ -112,6 +131,9 @@ namespace ropras::ompl_ext
                     bestDist = bestD[l];
                     best = static_cast<std::size_t>(bestI[l]);
                 }
+#endif
+            if (distSq != nullptr)
+                *distSq = bestDist;
             return best < size_ ? best : 0;  // only a NaN query leaves a lane index past the end
         }
 

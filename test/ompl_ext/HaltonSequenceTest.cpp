@@ -25,6 +25,26 @@ TEST(HaltonSequence, IncrementalMatchesClosedForm)
     }
 }
 
+TEST(HaltonSequence, AllDimensionsMatchClosedFormThroughSeveralCarries)
+{
+    // 32 dimensions (bases up to 131): 40000 points carry into the third digit of every base, the fourth of bases
+    // up to 31 and far up in the small bases; the carry recomputes the higher digits' value, so no drift either.
+    HaltonSequence halton;
+    halton.reset(HaltonSequence::MAX_DIMENSIONS);
+    double point[HaltonSequence::MAX_DIMENSIONS];
+    for (std::uint64_t i = 1; i <= 40000; ++i)
+    {
+        halton.next(point);
+        for (std::size_t k = 0; k < HaltonSequence::MAX_DIMENSIONS; ++k)
+            ASSERT_NEAR(point[k], HaltonSequence::radicalInverse(i, HaltonSequence::base(k)), 1e-13)
+                << "index " << i << " dimension " << k;
+    }
+    // reset() starts over in fewer dimensions
+    halton.reset(3);
+    halton.next(point);
+    EXPECT_DOUBLE_EQ(point[2], 0.2);
+}
+
 TEST(HaltonSequence, KnownValuesAndReset)
 {
     HaltonSequence halton;

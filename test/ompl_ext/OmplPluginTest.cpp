@@ -46,6 +46,14 @@ namespace
         return s->as<ompl::base::RealVectorStateSpace::StateType>()->values;
     }
 
+    /// a uniform state the validity checker accepts
+    void sampleValidState(const PlanningContext &c, ompl::base::StateSampler &sampler, ompl::base::State *s)
+    {
+        do
+            sampler.sampleUniform(s);
+        while (!c.validityChecker->isValid(s));
+    }
+
     /// first invalid sample index j in 1..n along q0 -> q1 at max-joint step \a res (0 if all valid), and n
     std::pair<int, int> firstInvalidSample(const PlanningContext &c, const double *q0, const double *q1, double res)
     {
@@ -83,9 +91,7 @@ TEST(OmplPlugin, MotionContractMatchesDenseReference)
     const double step = 1.0 / c.motionValidator->resolution();
     for (int trial = 0; trial < 600; ++trial)
     {
-        do
-            sampler->sampleUniform(s1);
-        while (!c.validityChecker->isValid(s1));
+        sampleValidState(c, *sampler, s1);
         sampler->sampleUniformNear(s2, s1, 1.5);
         const auto [j, n] = firstInvalidSample(c, values(s1), values(s2), c.motionValidator->resolution());
         std::pair<ompl::base::State *, double> lastValid{last, -1.0};
@@ -116,6 +122,58 @@ TEST(OmplPlugin, MotionContractMatchesDenseReference)
     si->freeState(last);
 }
 
+TEST(OmplPlugin, BothCheckMotionOverloadsMatchTheDenseReference)
+{
+    // The two checkMotion overloads give the same verdict as a dense scan of the same samples, on every motion
+    // from a valid s1, over lengths from one sample (the single-configuration path) to five batches, including
+    // sample counts that are multiples of the SIMD width; the counters count both overloads.
+    REQUIRE_SHARED();
+    ompl::RNG::setSeed(13);  // before any OMPL object creates a generator
+    PlanningContext c = pandaContext("bookshelf_tall", 4);
+    const auto &si = c.spaceInformation();
+    auto sampler = si->allocStateSampler();
+    ompl::base::State *s1 = si->allocState(), *s2 = si->allocState(), *last = si->allocState();
+    const double res = c.motionValidator->resolution();
+    std::mt19937 rng(13);
+    int valid = 0, invalid = 0, multiples = 0, singles = 0;
+    for (int trial = 0; trial < 800; ++trial)
+    {
+        sampleValidState(c, *sampler, s1);
+        // lengths 1..40 samples along a random direction, max joint step exactly n - 0.5 steps
+        const int samples = 1 + static_cast<int>(rng() % 40);
+        std::normal_distribution<double> normal;
+        std::vector<double> dir(c.robot->dof());
+        double linf = 0.0;
+        for (double &d : dir)
+        {
+            d = normal(rng);
+            linf = std::max(linf, std::abs(d));
+        }
+        for (std::size_t k = 0; k < dir.size(); ++k)
+            values(s2)[k] = values(s1)[k] + dir[k] / linf * (samples - 0.5) * res;
+        if (!si->satisfiesBounds(s2))
+            continue;
+        const auto [j, n] = firstInvalidSample(c, values(s1), values(s2), res);
+        ASSERT_EQ(n, samples);
+        multiples += n % c.checker->width() == 0 ? 1 : 0;
+        singles += n == 1 ? 1 : 0;
+        std::pair<ompl::base::State *, double> lastValid{last, -1.0};
+        const bool withLast = c.motionValidator->checkMotion(s1, s2, lastValid);
+        const bool plain = c.motionValidator->checkMotion(s1, s2);
+        ASSERT_EQ(withLast, j == 0) << "trial " << trial << ", n = " << n;
+        ASSERT_EQ(plain, j == 0) << "trial " << trial << ", n = " << n;
+        (plain ? valid : invalid) += 1;
+    }
+    EXPECT_GT(valid, 50);
+    EXPECT_GT(invalid, 20);  // 33 with these seeds: short motions from valid states in an open scene
+    EXPECT_GT(multiples, 10);
+    EXPECT_GT(singles, 5);
+    EXPECT_EQ(c.motionValidator->getValidMotionCount(), 2u * static_cast<unsigned>(valid));
+    EXPECT_EQ(c.motionValidator->getInvalidMotionCount(), 2u * static_cast<unsigned>(invalid));
+    for (auto *s : {s1, s2, last})
+        si->freeState(s);
+}
+
 TEST(OmplPlugin, AgreesWithDiscreteMotionValidatorOnSingleJointMotions)
 {
     // Along one joint, L2 and max-norm steps coincide: OMPL's DiscreteMotionValidator at the same step checks
@@ -135,9 +193,7 @@ TEST(OmplPlugin, AgreesWithDiscreteMotionValidatorOnSingleJointMotions)
     int compared = 0, invalid = 0;
     while (compared < 400)
     {
-        do
-            sampler->sampleUniform(s1);
-        while (!c.validityChecker->isValid(s1));
+        sampleValidState(c, *sampler, s1);
         si->copyState(s2, s1);
         const std::size_t k = rng() % c.robot->dof();
         const auto &joint = c.robot->joints()[k];

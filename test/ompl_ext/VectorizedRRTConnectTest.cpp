@@ -100,6 +100,16 @@ TEST(NodeBlocks, NearestMatchesDoubleBruteForce)
                         brute = i;
                 const std::size_t got = blocks.nearest(q.data());
                 ASSERT_LT(got, n);
+                std::vector<float> qf(q.begin(), q.end());
+                float distF = -1.0f;
+                ASSERT_EQ(blocks.nearest(qf.data(), &distF), got) << "the float query overload is the same scan";
+                // the float squared distance is within the rounding bound the planner's early dynamic-domain
+                // rejection relies on (coordinates within [-3, 3]: delta = 2 * 2^-24 * 3)
+                const double dExact = distSq(nodes.data() + got * dof, q.data(), dof);
+                const double delta = 2.0 * 0x1.0p-24 * 3.0;
+                const double bound = 1e-3 * dExact + 4.0 * delta * std::sqrt(static_cast<double>(dof) * dExact) +
+                                     2.0 * static_cast<double>(dof) * delta * delta;
+                EXPECT_LE(std::abs(static_cast<double>(distF) - dExact), bound) << "dof " << dof << ", " << n;
                 const double dBrute = distSq(nodes.data() + brute * dof, q.data(), dof);
                 const double dGot = distSq(nodes.data() + got * dof, q.data(), dof);
                 EXPECT_LE(dGot, dBrute * (1.0 + 1e-5) + 1e-6) << "dof " << dof << ", " << n << " nodes";
@@ -120,6 +130,12 @@ TEST(NodeBlocks, NearestMatchesDoubleBruteForce)
         dup.add(near);
     const double q[3] = {0.0, 0.0, 0.0};
     EXPECT_EQ(dup.nearest(q), 11u);
+    // ties within one block: the smallest index among the tied lanes, wherever the lanes sit
+    NodeBlocks one;
+    one.reset(3);
+    for (int i = 0; i < 8; ++i)
+        one.add(i == 2 || i == 5 || i == 7 ? near : far);
+    EXPECT_EQ(one.nearest(q), 2u);
     // clear() forgets the nodes; a NaN query still returns a valid index
     dup.clear();
     EXPECT_EQ(dup.size(), 0u);

@@ -35,12 +35,18 @@ namespace ropras::ompl_ext
         - direct connection: before growing any tree, the straight start-goal motion is checked once
           (`direct`); a raked check of an invalid motion usually fails within its first batches.
         Nearest neighbours: a linear scan over a float copy of the nodes, laid out in blocks of 8 (one SIMD
-        register per joint), then the exact distance to the winner in double (trees stay small at the median).
+        register per joint), reduced in registers, then the exact distance to the winner in double (trees stay
+        small at the median).
+        Rejected samples are the common case at the median MotionBenchMaker problem (most samples of a small
+        tree fall outside the dynamic domain once its nodes have failed an extension), so their path is kept
+        short: the Halton point is drawn 8 dimensions at a time (AVX2), shifted, scaled and converted to float in
+        4-wide steps, and a sample whose float distance is clearly beyond its nearest node's radius (beyond r^2
+        plus a bound on the float rounding) is rejected without the double distance, which decides closer calls
+        exactly as before.
         Per-solve fixed costs are kept out of solve(): tree storage is reserved in setup() and keeps its
         capacity across clear(), the sampler state is allocated once, the validator is identified once (one
         dynamic_cast per validator, not per solve), and the termination condition (a clock read and a lock) is
-        evaluated after every motion check but only every 8th cheap iteration (a sample the dynamic domain
-        rejects costs a Halton point and one nearest-neighbour scan). */
+        evaluated once per 32 units of work (a motion check 8, an iteration 1). */
     class VectorizedRRTConnect : public ompl::base::Planner
     {
     public:
@@ -89,12 +95,16 @@ namespace ropras::ompl_ext
 
         bool motionValid(const double *a, const double *b);
         bool stateValid(const double *q) const;
-        std::size_t nearest(const Tree &tree, const double *q, double &distSq) const;
+        /// \a qf: \a q in float when the caller has it (nullptr: converted here). \a rejected: \a q is clearly
+        /// outside the nearest node's dynamic domain (\a distSq is then not computed)
+        std::size_t nearest(const Tree &tree, const double *q, const float *qf, double &distSq, bool &rejected) const;
         void addNode(Tree &tree, const double *q, int parent);
-        void sample(double *out);
+        /// the next sample into \a out and, in float, into \a outF (for the nearest-neighbour scan)
+        void sample(double *out, float *outF);
         /// extends \a tree toward \a target by at most range_ from its nearest node (or from \a fromNode when
-        /// >= 0, without the dynamic-domain test); returns the new node index or -1
-        int extend(Tree &tree, const double *target, bool &reached, int fromNode = -1);
+        /// >= 0, without the dynamic-domain test); returns the new node index or -1. \a targetF: the target in
+        /// float, or nullptr
+        int extend(Tree &tree, const double *target, bool &reached, int fromNode = -1, const float *targetF = nullptr);
         void buildSolution(int startNode, int goalNode, bool startTreeIsA);
         /// reserves room for \a nodes nodes in both trees
         void reserveTrees(std::size_t nodes);
@@ -102,6 +112,10 @@ namespace ropras::ompl_ext
         Tree trees_[2];  ///< 0: rooted at start states, 1: rooted at goal states
         std::size_t dof_{0};
         std::vector<double> lower_, upper_, scratch_, shift_;
+        std::size_t dofPadded_{0};    ///< dof_ rounded up to 4 (the sample transform's step)
+        double floatSlack_[2]{0, 0};  ///< float rounding bound of a squared distance: [0] * d + [1]
+        std::vector<double> lowerPadded_, widthPadded_, shiftPadded_;
+        std::vector<float> sampleF_;  ///< the current sample in float
         HaltonSequence halton_;
         ompl::base::StateSamplerPtr sampler_;
         ompl::base::State *sampleState_{nullptr};
@@ -119,7 +133,7 @@ namespace ropras::ompl_ext
         double ddAlpha_{1.0e-4};
         double ddMinRadius_{1.0};
         bool direct_{true};
-        std::uint64_t motionChecks_{0};  ///< motion checks so far (solve() evaluates the PTC after each)
+        std::uint64_t motionChecks_{0};  ///< motion checks so far (8 units of work between two PTC evaluations)
         unsigned maxSamples_{0};         ///< 0: unlimited (until the termination condition)
         unsigned seed_{0};               ///< 0: Halton shift from OMPL's RNG
     };
