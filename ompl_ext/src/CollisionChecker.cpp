@@ -38,6 +38,12 @@ namespace ropras::ompl_ext
             return buffer.data();
         }
 
+        /// a bounding radius enlarged for float rounding: culling with it may never drop a touching sphere
+        float withRoundingSlack(double radius)
+        {
+            return static_cast<float>(radius * (1.0 + 1e-5) + 1e-6);
+        }
+
         std::size_t roundUp(std::size_t n)
         {
             return (n + WIDTH - 1) / WIDTH * WIDTH;
@@ -516,7 +522,7 @@ namespace ropras::ompl_ext
                     bound = std::max(bound, (sphere.centerInFrame - centre).norm() + sphere.radius);
                 }
                 // float rounding slack: the bound may never cull a touching sphere
-                op.br = static_cast<float>(bound * (1.0 + 1e-5) + 1e-6);
+                op.br = withRoundingSlack(bound);
                 linkIndex[c].push_back(static_cast<int>(p.links.size()));
                 p.links.push_back(op);
             }
@@ -632,35 +638,30 @@ namespace ropras::ompl_ext
             const simd::LinkOp &la = p.links[static_cast<std::size_t>(p.selfPairs[k].first)];
             const simd::LinkOp &lb = p.links[static_cast<std::size_t>(p.selfPairs[k].second)];
             const std::uint8_t *m = p.selfPairSphereMasks.data() + WIDTH * k;
+            const auto sphereAt = [&p](int slot)
+            {
+                const auto k = static_cast<std::size_t>(slot);
+                return Sphere{Eigen::Vector3d(p.sx[k], p.sy[k], p.sz[k]), p.sr[k]};
+            };
             unsigned bMask = 0u;
-            std::vector<Sphere> membersA, membersB;
+            std::vector<Sphere> members[2];
             for (int i = 0; i < WIDTH; ++i)
             {
                 bMask |= m[i];
                 if (m[i] != 0)
-                    membersA.push_back({Eigen::Vector3d(p.sx[static_cast<std::size_t>(la.first + i)],
-                                                        p.sy[static_cast<std::size_t>(la.first + i)],
-                                                        p.sz[static_cast<std::size_t>(la.first + i)]),
-                                        p.sr[static_cast<std::size_t>(la.first + i)]});
+                    members[0].push_back(sphereAt(la.first + i));
             }
             for (int j = 0; j < WIDTH; ++j)
                 if ((bMask >> j & 1u) != 0u)
-                    membersB.push_back({Eigen::Vector3d(p.sx[static_cast<std::size_t>(lb.first + j)],
-                                                        p.sy[static_cast<std::size_t>(lb.first + j)],
-                                                        p.sz[static_cast<std::size_t>(lb.first + j)]),
-                                        p.sr[static_cast<std::size_t>(lb.first + j)]});
+                    members[1].push_back(sphereAt(lb.first + j));
             float near[2][4];
-            const std::vector<Sphere> *members[2] = {&membersA, &membersB};
             for (int side = 0; side < 2; ++side)
             {
-                const Sphere e = enclosingSphere(*members[side]);
-                double bound = e.radius;
-                for (const Sphere &s : *members[side])  // enclosure exactly, then float rounding slack as for links
-                    bound = std::max(bound, (s.center - e.center).norm() + s.radius);
+                const Sphere e = enclosingSphere(members[side]);  // encloses every member exactly (its contract)
                 near[side][0] = static_cast<float>(e.center.x());
                 near[side][1] = static_cast<float>(e.center.y());
                 near[side][2] = static_cast<float>(e.center.z());
-                near[side][3] = static_cast<float>(bound * (1.0 + 1e-5) + 1e-6);
+                near[side][3] = withRoundingSlack(e.radius);
             }
             p.selfPairNear.insert(p.selfPairNear.end(), near[0], near[0] + 4);
             p.selfPairNear.insert(p.selfPairNear.end(), near[1], near[1] + 4);
