@@ -179,7 +179,7 @@ namespace
         }
 
         std::size_t sink = 0;
-        std::vector<double> fk, batch, singleValid, singleInvalid, edgeValid, edgeInvalid, fclSphere, fclMesh;
+        std::vector<double> fk, batch, batchAll, singleValid, singleInvalid, edgeValid, edgeInvalid, fclSphere, fclMesh;
         std::vector<float> centres(4 * robot->spheres().size() * w);
         std::unique_ptr<bool[]> verdicts(new bool[a.configs]);
         std::size_t totalConfigs = 0, nValid = 0, nInvalid = 0, nEdgeValid = 0, nEdgeInvalid = 0;
@@ -210,6 +210,14 @@ namespace
                                           sink += checker.isValidBatch(s.env, s.configs.data(), a.configs / w * w,
                                                                        verdicts.get());
                                   }));
+            // the same blocks of 8, asked whether all 8 are valid (stops at a block's first collision)
+            batchAll.push_back(nsPer(totalConfigs,
+                                     [&]
+                                     {
+                                         for (const Scene &s : scenes)
+                                             for (std::size_t k = 0; k + w <= a.configs; k += w)
+                                                 sink += checker.allValid(s.env, s.configs.data() + k * dof, w) ? 1 : 0;
+                                     }));
             singleValid.push_back(nsPer(nValid,
                                         [&]
                                         {
@@ -288,6 +296,7 @@ namespace
         const std::vector<Row> rows{
             {"fk_ns", "FK only, batch of 8 (per config)", median(fk), totalConfigs},
             {"batch_ns", "batch of 8 distinct (per config)", median(batch), totalConfigs},
+            {"batch_all_ns", "batch of 8 distinct, all valid? (per config)", median(batchAll), totalConfigs},
             {"single_valid_ns", "single config, valid", median(singleValid), nValid},
             {"single_invalid_ns", "single config, invalid", median(singleInvalid), nInvalid},
             {"edge_valid_ns", "1 rad edge at 1/32 rad, valid", median(edgeValid), nEdgeValid},

@@ -166,6 +166,42 @@ namespace ropras::ompl_ext
                 return nValid;
             }
 
+            /** \brief True when all \a count rows are valid; stops at the first block of WIDTH rows in which some
+                lane collides (VAMP's query: the block is decided by its first collision in any lane). */
+            static bool allValid(const KinematicProgram &p, const Environment &env, const double *qs,
+                                 std::size_t count) noexcept
+            {
+                const auto dof = static_cast<std::size_t>(p.dof);
+                float *buf = threadScratch(std::max(p.batch.total, p.single.total));
+                constexpr unsigned all = (1u << WIDTH) - 1u;
+                for (std::size_t start = 0; start < count; start += WIDTH)
+                {
+                    const std::size_t n = std::min<std::size_t>(WIDTH, count - start);
+                    const double *rows = qs + start * dof;
+                    if (n == 1)
+                    {
+                        if (!withinLimits(p, rows) || !K::validSingle(p, env, rows, buf))
+                            return false;
+                        continue;
+                    }
+                    if (n < WIDTH || !loadRows(p, rows, buf + p.batch.q))
+                    {
+                        // a short block, or some row needs a look: every row within its limits, missing lanes
+                        // repeat the last row
+                        for (std::size_t i = 0; i < n; ++i)
+                            if (!withinLimits(p, rows + i * dof))
+                                return false;
+                        for (int i = 0; i < WIDTH; ++i)
+                            putLane(p, rows + std::min<std::size_t>(static_cast<std::size_t>(i), n - 1) * dof, i,
+                                    buf + p.batch.q);
+                    }
+                    K::framesBatch(p, buf);
+                    if (K::collideBatch(p, env, buf, all, true) != 0u)
+                        return false;
+                }
+                return true;
+            }
+
             /// fills the batch q block with samples idx[i] / n of q0 -> q0 + d
             static void putSamples(const KinematicProgram &p, const float *q0, const float *d, const double *idx,
                                    double n, float *qBlock) noexcept
@@ -790,6 +826,11 @@ namespace ropras::ompl_ext
                                                bool *valid) const noexcept
     {
         return ROPRAS_DISPATCH(isValidBatch(program_->kp, env, qs, count, valid));
+    }
+
+    bool CollisionChecker::allValid(const Environment &env, const double *qs, std::size_t count) const noexcept
+    {
+        return ROPRAS_DISPATCH(allValid(program_->kp, env, qs, count));
     }
 
     bool CollisionChecker::isMotionValid(const Environment &env, const double *q0, const double *q1, double resolution,

@@ -721,6 +721,24 @@ namespace
                     EXPECT_GT(invalid, count / 20) << robot->name();
                 }
             }
+            // allValid over windows of every length 0..20 at many offsets: true exactly when every row of the
+            // window is valid by isValid (windows with and without bad rows, short and full blocks)
+            std::vector<char> single(count);
+            for (std::size_t k = 0; k < count; ++k)
+                single[k] = checker.isValid(env, qs.data() + k * dof) ? 1 : 0;
+            std::size_t allTrue = 0, allFalse = 0;
+            for (std::size_t start = 0; start + 20 <= count; start += 7)
+                for (std::size_t len = 0; len <= 20; ++len)
+                {
+                    const bool expected = std::all_of(single.begin() + static_cast<std::ptrdiff_t>(start),
+                                                      single.begin() + static_cast<std::ptrdiff_t>(start + len),
+                                                      [](char c) { return c != 0; });
+                    ASSERT_EQ(checker.allValid(env, qs.data() + start * dof, len), expected)
+                        << robot->name() << " " << simdBackendName(b) << " rows " << start << " + " << len;
+                    (expected ? allTrue : allFalse) += 1;
+                }
+            EXPECT_GT(allTrue, 300u) << robot->name();  // enough windows of each answer
+            EXPECT_GT(allFalse, 300u) << robot->name();
         }
     }
 }  // namespace

@@ -50,6 +50,10 @@ namespace ropras::ompl_ext
         /// \a count configurations, row-major (count x dof()); writes one verdict each; returns the number valid
         std::size_t isValidBatch(const Environment &env, const double *qs, std::size_t count,
                                  bool *valid) const noexcept;
+        /** \brief True when all \a count configurations (row-major, count x dof()) are valid. Faster than
+            isValidBatch when the answer may be false: it stops at the first block of width() rows in which any
+            configuration collides (the query VAMP's block check answers). Empty input: true. */
+        bool allValid(const Environment &env, const double *qs, std::size_t count) const noexcept;
         /** \brief The straight joint-space motion q0 -> q1, interpolated at \a resolution (max joint step,
             rad or m) and raked over the SIMD lanes. q1 is checked; q0 is assumed valid (checked too when
             \a checkStart). On failure, when \a lastValidFraction is non-null it receives the largest
