@@ -588,6 +588,7 @@ namespace ropras::ompl_ext
         // self pairs: program links of both collision links, with the sphere pairs that can touch within the joint
         // limits (reachableSpherePairs); a program pair none of whose sphere pairs can touch is dropped
         std::vector<std::uint8_t> pairMasks;  // per program pair WIDTH masks: per slot of A, the slots of B
+        std::vector<int> pairGrid;            // per program pair: its grid of free cells or -1
         for (const auto &pair : model.selfCollisionPairs())
         {
             if (pair.first < 0 || pair.second < 0 || pair.first >= static_cast<int>(collisionLinks.size()) ||
@@ -595,6 +596,45 @@ namespace ropras::ompl_ext
                 throw Error("CollisionChecker: robot '" + model.name() + "' self-collision pair (" +
                             std::to_string(pair.first) + ", " + std::to_string(pair.second) + ") out of range");
             const SphereReach reach = reachableSpherePairs(model, pair.first, pair.second);
+            // its grid of free cells, when the batch q block holds the grid's variables unreduced (|limits| <= 64)
+            int grid = -1;
+            const SpherePairFreeCells &cells = reach.freeCells;
+            bool usable = !cells.variables.empty() && cells.variables.size() <= 2 && cells.cells > 0 &&
+                          static_cast<int>(p.selfGrids.size()) < simd::MAX_SELF_GRIDS;
+            for (const int v : cells.variables)
+                usable = usable && std::abs(model.joints()[static_cast<std::size_t>(v)].lower) <= 64.0 &&
+                         std::abs(model.joints()[static_cast<std::size_t>(v)].upper) <= 64.0;
+            // link pairs over the same joints share one grid: a cell is free when it is free for each of them
+            for (std::size_t gi = 0; usable && gi < p.selfGrids.size(); ++gi)
+            {
+                const simd::SelfGrid &g = p.selfGrids[gi];
+                const std::size_t n = cells.variables.size();
+                if (g.cells != cells.cells || g.var[0] != cells.variables[0] ||
+                    g.var[1] != (n > 1 ? cells.variables[1] : -1) || g.lower[0] != static_cast<float>(cells.lower[0]) ||
+                    g.inv[0] != static_cast<float>(1.0 / cells.width[0]) ||
+                    (n > 1 && (g.lower[1] != static_cast<float>(cells.lower[1]) ||
+                               g.inv[1] != static_cast<float>(1.0 / cells.width[1]))))
+                    continue;
+                for (std::size_t w = 0; w < cells.bits.size(); ++w)
+                    p.selfGridBits[static_cast<std::size_t>(g.bitsOffset) + w] &= cells.bits[w];
+                grid = static_cast<int>(gi);
+                usable = false;
+            }
+            if (usable)
+            {
+                simd::SelfGrid g;
+                for (std::size_t d = 0; d < cells.variables.size(); ++d)
+                {
+                    g.var[d] = cells.variables[d];
+                    g.lower[d] = static_cast<float>(cells.lower[d]);
+                    g.inv[d] = static_cast<float>(1.0 / cells.width[d]);
+                }
+                g.cells = cells.cells;
+                g.bitsOffset = static_cast<int>(p.selfGridBits.size());
+                p.selfGridBits.insert(p.selfGridBits.end(), cells.bits.begin(), cells.bits.end());
+                grid = static_cast<int>(p.selfGrids.size());
+                p.selfGrids.push_back(g);
+            }
             std::unordered_set<std::uint64_t> reachable;
             for (const auto &sp : reach.pairs)
                 reachable.insert(static_cast<std::uint64_t>(sp.first) << 32 | static_cast<std::uint32_t>(sp.second));
@@ -622,6 +662,7 @@ namespace ropras::ompl_ext
                         continue;
                     p.selfPairs.emplace_back(a, b);
                     pairMasks.insert(pairMasks.end(), masks, masks + WIDTH);
+                    pairGrid.push_back(grid);
                 }
         }
 
@@ -656,6 +697,7 @@ namespace ropras::ompl_ext
             for (const std::size_t k : order)
             {
                 sorted.push_back(p.selfPairs[k]);
+                p.selfPairGrid.push_back(pairGrid[k]);
                 const std::uint8_t *m = pairMasks.data() + WIDTH * k;
                 unsigned aMask = 0u;
                 for (int i = 0; i < WIDTH; ++i)

@@ -47,10 +47,11 @@ namespace ropras::ompl_ext
                         " collision links; link index " + std::to_string(linkA < 0 || linkA >= nLinks ? linkA : linkB) +
                         " is out of range");
         if (!(options.margin >= 0.0) || !std::isfinite(options.margin) || options.boxBudget < 1 ||
-            options.maxVariables < 0)
+            options.maxVariables < 0 || options.freeCellsPerJoint < 0 || options.freeCellsPerJoint > 1024)
             throw Error("reachableSpherePairs: invalid options (margin " + std::to_string(options.margin) +
                         " must be finite and >= 0, boxBudget " + std::to_string(options.boxBudget) +
-                        " >= 1, maxVariables " + std::to_string(options.maxVariables) + " >= 0)");
+                        " >= 1, maxVariables " + std::to_string(options.maxVariables) + " >= 0, freeCellsPerJoint " +
+                        std::to_string(options.freeCellsPerJoint) + " in [0, 1024])");
 
         const CollisionLink &la = links[static_cast<std::size_t>(linkA)];
         const CollisionLink &lb = links[static_cast<std::size_t>(linkB)];
@@ -167,6 +168,40 @@ namespace ropras::ompl_ext
 
         std::vector<Eigen::Vector3d> centres[2] = {std::vector<Eigen::Vector3d>(nA), std::vector<Eigen::Vector3d>(nB)};
         std::vector<double> slack[2] = {std::vector<double>(nA), std::vector<double>(nB)};
+        // sphere centres at a box centre, in the common ancestor's frame, and their slack over the box
+        const auto place = [&](const std::vector<double> &centre, const std::vector<double> &half)
+        {
+            for (int side = 0; side < 2; ++side)
+            {
+                Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+                for (std::size_t k = 0; k < chain[side].frames.size(); ++k)
+                {
+                    const KinematicFrame &f = frames[static_cast<std::size_t>(chain[side].frames[k])];
+                    t = t * f.offset;
+                    if (f.motion == JointMotion::RotateZ)
+                        for (std::size_t d = 0; d < nDims; ++d)
+                            if (dims[d].side == side && dims[d].position == static_cast<int>(k))
+                                t.rotate(Eigen::AngleAxisd(centre[d], Eigen::Vector3d::UnitZ()));
+                }
+                for (std::size_t s = 0; s < sphereCount(side); ++s)
+                {
+                    const CollisionSphere &sphere = spheres[static_cast<std::size_t>(chain[side].firstSphere) + s];
+                    centres[side][s] = t * sphere.centerInFrame;
+                    double l = 0.0;
+                    for (std::size_t d = 0; d < nDims; ++d)
+                        l += lipschitz[side][s * nDims + d] * half[d];
+                    slack[side][s] = l;
+                }
+            }
+        };
+        /// candidate k's gap beyond contact plus the margin at the placed centres
+        const auto gapAtCentre = [&](int k)
+        {
+            const std::size_t a = static_cast<std::size_t>(k) / nB, b = static_cast<std::size_t>(k) % nB;
+            return (centres[0][a] - centres[1][b]).norm() -
+                   spheres[static_cast<std::size_t>(la.firstSphere) + a].radius -
+                   spheres[static_cast<std::size_t>(lb.firstSphere) + b].radius - options.margin;
+        };
         // breadth first: the budget is spent level by level, so that a few hard pairs (a minimum distance just
         // above the margin) cannot keep the easy ones of unvisited boxes
         std::deque<Box> queue;
@@ -189,39 +224,14 @@ namespace ropras::ompl_ext
                 continue;
             }
             ++result.boxes;
-            // sphere centres at the box centre, in the common ancestor's frame; their slack over the box
-            for (int side = 0; side < 2; ++side)
-            {
-                Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-                for (std::size_t k = 0; k < chain[side].frames.size(); ++k)
-                {
-                    const KinematicFrame &f = frames[static_cast<std::size_t>(chain[side].frames[k])];
-                    t = t * f.offset;
-                    if (f.motion == JointMotion::RotateZ)
-                        for (std::size_t d = 0; d < nDims; ++d)
-                            if (dims[d].side == side && dims[d].position == static_cast<int>(k))
-                                t.rotate(Eigen::AngleAxisd(box.centre[d], Eigen::Vector3d::UnitZ()));
-                }
-                for (std::size_t s = 0; s < sphereCount(side); ++s)
-                {
-                    const CollisionSphere &sphere = spheres[static_cast<std::size_t>(chain[side].firstSphere) + s];
-                    centres[side][s] = t * sphere.centerInFrame;
-                    double l = 0.0;
-                    for (std::size_t d = 0; d < nDims; ++d)
-                        l += lipschitz[side][s * nDims + d] * box.half[d];
-                    slack[side][s] = l;
-                }
-            }
+            place(box.centre, box.half);
             std::vector<int> open;
             for (const int k : box.pairs)
             {
-                const std::size_t a = static_cast<std::size_t>(k) / nB, b = static_cast<std::size_t>(k) % nB;
-                const double gap = (centres[0][a] - centres[1][b]).norm() -
-                                   spheres[static_cast<std::size_t>(la.firstSphere) + a].radius -
-                                   spheres[static_cast<std::size_t>(lb.firstSphere) + b].radius - options.margin;
+                const double gap = gapAtCentre(k);
                 if (gap <= 0.0)
                     reached[static_cast<std::size_t>(k)] = 1;
-                else if (gap <= slack[0][a] + slack[1][b])
+                else if (gap <= slack[0][static_cast<std::size_t>(k) / nB] + slack[1][static_cast<std::size_t>(k) % nB])
                     open.push_back(k);
             }
             if (open.empty())
@@ -246,11 +256,89 @@ namespace ropras::ompl_ext
             queue.push_back(std::move(lo));
             queue.push_back(std::move(hi));
         }
+        std::vector<int> kept;
         for (std::size_t a = 0; a < nA; ++a)
             for (std::size_t b = 0; b < nB; ++b)
                 if (reached[a * nB + b] != 0)
+                {
                     result.pairs.emplace_back(la.firstSphere + static_cast<int>(a),
                                               lb.firstSphere + static_cast<int>(b));
+                    kept.push_back(static_cast<int>(a * nB + b));
+                }
+
+        // the grid of free cells: every joint revolute with finite limits (continuous joints are not reduced to
+        // one turn by the checkers, so their values can leave any finite grid)
+        const int n = options.freeCellsPerJoint;
+        bool gridable = n > 0 && nDims > 0 && !kept.empty();
+        for (const Dim &d : dims)
+            gridable =
+                gridable && std::isfinite(d.lower) && std::isfinite(d.upper) && d.upper > d.lower &&
+                model
+                        .joints()[static_cast<std::size_t>(
+                            frames[static_cast<std::size_t>(chain[d.side].frames[static_cast<std::size_t>(d.position)])]
+                                .variable)]
+                        .type == JointType::Revolute;
+        if (!gridable)
+            return result;
+        SpherePairFreeCells &grid = result.freeCells;
+        grid.cells = n;
+        for (const Dim &d : dims)
+        {
+            grid.variables.push_back(
+                frames[static_cast<std::size_t>(chain[d.side].frames[static_cast<std::size_t>(d.position)])].variable);
+            grid.lower.push_back(d.lower);
+            grid.width.push_back((d.upper - d.lower) / n);
+        }
+        const std::size_t nCells = nDims == 1 ? static_cast<std::size_t>(n) : static_cast<std::size_t>(n) * n;
+        grid.bits.assign((nCells + 31) / 32, 0u);
+        constexpr double WIDEN = 1e-5;  // rad beyond each side of a cell
+        std::vector<double> centre(nDims), half(nDims);
+        for (std::size_t cell = 0; cell < nCells; ++cell)
+        {
+            const std::size_t index[2] = {nDims == 1 ? cell : cell / static_cast<std::size_t>(n),
+                                          cell % static_cast<std::size_t>(n)};
+            for (std::size_t d = 0; d < nDims; ++d)
+            {
+                centre[d] = grid.lower[d] + (static_cast<double>(index[d]) + 0.5) * grid.width[d];
+                half[d] = 0.5 * grid.width[d] + WIDEN;
+            }
+            place(centre, half);
+            const bool isFree = std::all_of(kept.begin(), kept.end(),
+                                            [&](int k)
+                                            {
+                                                const std::size_t a = static_cast<std::size_t>(k) / nB,
+                                                                  b = static_cast<std::size_t>(k) % nB;
+                                                return gapAtCentre(k) > slack[0][a] + slack[1][b];
+                                            });
+            if (isFree)
+                grid.bits[cell / 32] |= 1u << (cell % 32);
+        }
         return result;
+    }
+
+    double SpherePairFreeCells::freeFraction() const noexcept
+    {
+        if (variables.empty() || cells <= 0)
+            return 0.0;
+        std::size_t set = 0;
+        for (const std::uint32_t w : bits)
+            set += static_cast<std::size_t>(__builtin_popcount(w));
+        const double all = variables.size() == 1 ? cells : static_cast<double>(cells) * cells;
+        return static_cast<double>(set) / all;
+    }
+
+    bool SpherePairFreeCells::isFree(const double *q) const noexcept
+    {
+        if (variables.empty() || cells <= 0)
+            return false;
+        std::size_t cell = 0;
+        for (std::size_t d = 0; d < variables.size(); ++d)
+        {
+            const double x = (q[static_cast<std::size_t>(variables[d])] - lower[d]) / width[d];
+            if (!(x >= 0.0 && x < cells))  // outside the limits (or NaN): no claim
+                return false;
+            cell = cell * static_cast<std::size_t>(cells) + static_cast<std::size_t>(x);
+        }
+        return ((bits[cell / 32] >> (cell % 32)) & 1u) != 0u;
     }
 }  // namespace ropras::ompl_ext

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <memory>
 #include <random>
 #include <set>
 #include <string>
@@ -54,6 +55,13 @@ namespace
         return -1;
     }
 
+    /// ../shared/robots/<name>/<name>_spherized.urdf with its SRDF
+    std::shared_ptr<const RobotModel> sharedRobot(const std::string &name)
+    {
+        return RobotModel::fromUrdfFile(SHARED + "/robots/" + name + "/" + name + "_spherized.urdf",
+                                        SHARED + "/robots/" + name + "/" + name + ".srdf");
+    }
+
     const double MIN_GAP = 2.0 * 0.5 * std::sin(0.5);  // closest approach of the two centres
 }  // namespace
 
@@ -73,6 +81,25 @@ TEST(SphereReach, SwingMatchesTheClosedForm)
         const SphereReach r = reachableSpherePairs(*near, collisionLink(*near, "base"), collisionLink(*near, "tip"));
         EXPECT_TRUE(r.analysed);
         ASSERT_EQ(r.pairs.size(), 1u) << "tip radius " << tip;
+    }
+
+    // the free cells of the kept pair: their gap 2 * 0.5 * sin(q / 2) - 0.4792 grows with q from -0.0000 at q = 1
+    {
+        const auto near = RobotModel::fromUrdfString(swingUrdf(0.2, 0.2792), ".", "swing.urdf");
+        const SphereReach r = reachableSpherePairs(*near, collisionLink(*near, "base"), collisionLink(*near, "tip"));
+        const SpherePairFreeCells &grid = r.freeCells;
+        ASSERT_EQ(grid.variables, std::vector<int>{0});
+        EXPECT_EQ(grid.cells, 128);
+        for (const double q : {1.0, 1.001, 1.004})  // gap <= 0.5 mm margin + a cell's slack (0.5 * 1/128 * 0.5)
+            EXPECT_FALSE(grid.isFree(&q)) << q;
+        for (const double q : {1.3, 1.6, 1.99})  // gap 0.125 .. 0.36 m
+            EXPECT_TRUE(grid.isFree(&q)) << q;
+        for (const double q : {0.99, 2.01, std::nan("")})  // outside the limits: no claim
+            EXPECT_FALSE(grid.isFree(&q)) << q;
+        EXPECT_GT(grid.freeFraction(), 0.9);
+        SphereReachOptions noGrid;
+        noGrid.freeCellsPerJoint = 0;
+        EXPECT_TRUE(reachableSpherePairs(*near, 0, 1, noGrid).freeCells.variables.empty());
     }
 
     // a zero margin keeps the 0.4792 pair out (it never touches), and the CollisionChecker agrees with sampling
@@ -110,6 +137,9 @@ TEST(SphereReach, BadArgumentsAreErrors)
     bad = SphereReachOptions();
     bad.boxBudget = 0;
     ropras::test::expectErrorMentions([&] { reachableSpherePairs(*robot, 0, 1, bad); }, {"boxBudget"});
+    bad = SphereReachOptions();
+    bad.freeCellsPerJoint = -3;
+    ropras::test::expectErrorMentions([&] { reachableSpherePairs(*robot, 0, 1, bad); }, {"freeCellsPerJoint", "-3"});
 }
 
 TEST(SphereReach, NoSampledContactIsMissingOnPandaAndUr5)
@@ -118,8 +148,7 @@ TEST(SphereReach, NoSampledContactIsMissingOnPandaAndUr5)
         GTEST_SKIP() << "../shared not found: " << SHARED << " (this test needs robots/panda and robots/ur5)";
     for (const std::string name : {"panda", "ur5"})
     {
-        const auto robot = RobotModel::fromUrdfFile(SHARED + "/robots/" + name + "/" + name + "_spherized.urdf",
-                                                    SHARED + "/robots/" + name + "/" + name + ".srdf");
+        const auto robot = sharedRobot(name);
         const auto &links = robot->collisionLinks();
         const auto &spheres = robot->spheres();
         std::set<std::pair<int, int>> kept;
@@ -161,6 +190,69 @@ TEST(SphereReach, NoSampledContactIsMissingOnPandaAndUr5)
             }
         }
         EXPECT_GT(contacts, 1000u) << name << ": the samples must exercise self contact";
+    }
+}
+
+TEST(SphereReach, NoFreeCellHoldsAContactOnPandaAndUr5)
+{
+    if (!std::filesystem::exists(SHARED + "/robots"))
+        GTEST_SKIP() << "../shared not found: " << SHARED << " (this test needs robots/panda and robots/ur5)";
+    for (const std::string name : {"panda", "ur5"})
+    {
+        const auto robot = sharedRobot(name);
+        const auto &spheres = robot->spheres();
+        std::mt19937 rng(23);
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        std::vector<double> q(robot->dof());
+        std::size_t grids = 0, samples = 0;
+        double bestFree = 0.0;
+        for (const auto &pair : robot->selfCollisionPairs())
+        {
+            const SphereReach r = reachableSpherePairs(*robot, pair.first, pair.second);
+            const SpherePairFreeCells &grid = r.freeCells;
+            if (grid.variables.empty())
+                continue;
+            ++grids;
+            // when written: Panda link5 against link7, hand and fingers 0.95-0.997 free; UR5 0.88-0.89 but one 0
+            bestFree = std::max(bestFree, grid.freeFraction());
+            // points drawn inside free cells (their corners included), the other joints anywhere: no kept pair
+            // may be in contact, nor within the margin minus a float rounding allowance
+            std::vector<std::size_t> freeCells;
+            const std::size_t nCells = grid.variables.size() == 1 ? static_cast<std::size_t>(grid.cells)
+                                                                  : static_cast<std::size_t>(grid.cells) * grid.cells;
+            for (std::size_t c = 0; c < nCells; ++c)
+                if ((grid.bits[c / 32] >> (c % 32)) & 1u)
+                    freeCells.push_back(c);
+            for (int n = 0; n < 4000 && !freeCells.empty(); ++n)
+            {
+                for (std::size_t j = 0; j < q.size(); ++j)
+                    q[j] = robot->joints()[j].lower + (robot->joints()[j].upper - robot->joints()[j].lower) * u(rng);
+                const std::size_t cell =
+                    freeCells[static_cast<std::size_t>(u(rng) * freeCells.size()) % freeCells.size()];
+                const std::size_t index[2] = {grid.variables.size() == 1 ? cell : cell / grid.cells, cell % grid.cells};
+                for (std::size_t d = 0; d < grid.variables.size(); ++d)
+                {
+                    const double t = n % 4 == 0 ? 0.0 : n % 4 == 1 ? 1.0 : u(rng);  // corners and insides
+                    q[static_cast<std::size_t>(grid.variables[d])] =
+                        grid.lower[d] + (static_cast<double>(index[d]) + t) * grid.width[d];
+                }
+                const auto centres = robot->sphereCentersReference(q.data());
+                for (const auto &sp : r.pairs)
+                {
+                    const double gap =
+                        (centres[static_cast<std::size_t>(sp.first)] - centres[static_cast<std::size_t>(sp.second)])
+                            .norm() -
+                        spheres[static_cast<std::size_t>(sp.first)].radius -
+                        spheres[static_cast<std::size_t>(sp.second)].radius;
+                    ASSERT_GT(gap, 4e-4) << name << ": spheres " << sp.first << " and " << sp.second
+                                         << " within the margin in free cell " << cell;
+                }
+                ++samples;
+            }
+        }
+        EXPECT_GT(grids, 2u) << name;
+        EXPECT_GT(bestFree, 0.85) << name;
+        EXPECT_GT(samples, 8000u) << name;
     }
 }
 

@@ -813,6 +813,36 @@ namespace ropras::ompl_ext::simd
             constexpr int W = WIDTH;
             unsigned hit = 0u;
             const float *lx = buf + l.lx, *ly = buf + l.ly, *lz = buf + l.lz;
+            // lanes in a free cell of each grid (SpherePairFreeCells), computed when a pair first needs it
+            unsigned gridLanes[MAX_SELF_GRIDS];
+            std::uint32_t gridKnown = 0u;
+            const auto gridFree = [&](int gi)
+            {
+                if ((gridKnown >> gi) & 1u)
+                    return gridLanes[gi];
+                const SelfGrid &g = p.selfGrids[static_cast<std::size_t>(gi)];
+                const V top = V::broadcast(static_cast<float>(g.cells - 1));
+                const auto cellOf = [&](int d)
+                {
+                    const V x = (V::load(buf + l.q + W * g.var[d]) - V::broadcast(g.lower[d])) * V::broadcast(g.inv[d]);
+                    return floor(min(max(x, V::zero()), top));
+                };
+                // cell numbers are integers below 2^24: exact in float
+                const V cell =
+                    g.var[1] < 0 ? cellOf(0) : fma(cellOf(0), V::broadcast(static_cast<float>(g.cells)), cellOf(1));
+                float c[W];
+                cell.store(c);
+                const std::uint32_t *bits = p.selfGridBits.data() + g.bitsOffset;
+                unsigned lanes = 0u;
+                for (int i = 0; i < W; ++i)
+                {
+                    const auto k = static_cast<std::uint32_t>(c[i]);
+                    lanes |= ((bits[k >> 5] >> (k & 31u)) & 1u) << i;
+                }
+                gridLanes[gi] = lanes;
+                gridKnown |= 1u << gi;
+                return lanes;
+            };
             for (const SelfPairRange &range : p.selfPairRanges)
             {
                 // the boxes of the two link groups first: no pair of the range can touch where they are apart
@@ -846,6 +876,13 @@ namespace ropras::ompl_ext::simd
                         unsigned c = cand[k - base] & ~hit;
                         if (c == 0u)
                             continue;
+                        const int grid = p.selfPairGrid[static_cast<std::size_t>(k)];
+                        if (grid >= 0)
+                        {
+                            c &= ~gridFree(grid);
+                            if (c == 0u)
+                                continue;
+                        }
                         const LinkOp &a = p.links[static_cast<std::size_t>(pair.first)];
                         const LinkOp &b = p.links[static_cast<std::size_t>(pair.second)];
                         if (p.selfPairUseNear[static_cast<std::size_t>(k)] != 0)

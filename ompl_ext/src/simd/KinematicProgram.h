@@ -92,6 +92,19 @@ namespace ropras::ompl_ext::simd
         std::size_t frames{0}, sin{0}, cos{0}, q{0}, sx{0}, sy{0}, sz{0}, lx{0}, ly{0}, lz{0}, total{0};
     };
 
+    /** \brief SpherePairFreeCells in float for the batch path: the cell of lane values v0 (and v1) is
+        clamp(int((v - lower) * inv), 0, cells - 1); its bit in KinematicProgram::selfGridBits from bitsOffset. */
+    struct SelfGrid
+    {
+        int var[2]{-1, -1};  ///< var[1] = -1: a grid over one variable
+        float lower[2]{0.0f, 0.0f}, inv[2]{0.0f, 0.0f};
+        int cells{0};
+        int bitsOffset{0};
+    };
+
+    /// grids a batch consults (the others are ignored: a grid only ever removes work)
+    constexpr int MAX_SELF_GRIDS = 32;
+
     struct KinematicProgram
     {
         int dof{0};
@@ -128,6 +141,10 @@ namespace ropras::ompl_ext::simd
             When the pair's link bounds touch, the batch path tests these first (selfPairUseNear). */
         std::vector<float> selfPairNear, selfPairNearReach2;
         std::vector<char> selfPairUseNear;
+        /// per self pair: its grid of free cells in selfGrids, or -1
+        std::vector<int> selfPairGrid;
+        std::vector<SelfGrid> selfGrids;
+        std::vector<std::uint32_t> selfGridBits;
         std::vector<double> lower, upper;  ///< per variable
         /// per variable: v is valid iff lowerCheck <= v <= upperCheck (finite bounds; +-DBL_MAX when unbounded)
         std::vector<double> lowerCheck, upperCheck;
