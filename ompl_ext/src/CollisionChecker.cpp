@@ -97,9 +97,8 @@ namespace ropras::ompl_ext
             {
                 if (p.dof > WIDTH || !V::loadRows(rows, p.dof, p.lowerCheck.data(), p.upperCheck.data(), qBlock))
                     return false;
-                for (int j = 0; j < p.dof; ++j)
-                    if (p.rotational[static_cast<std::size_t>(j)] &&
-                        cmpGe(abs(V::load(qBlock + WIDTH * j)), V::broadcast(64.0f)).any())
+                for (const int j : p.reduceCheck)
+                    if (cmpGe(abs(V::load(qBlock + WIDTH * j)), V::broadcast(64.0f)).any())
                         return false;
                 return true;
             }
@@ -834,6 +833,11 @@ namespace ropras::ompl_ext
         p.batch.ly = take(WIDTH * nLinks);
         p.batch.lz = take(WIDTH * nLinks);
         p.batch.total = at;
+        // the angles a batch must look at for the double reduction: rotational joints whose limits reach past 64
+        for (int j = 0; j < p.dof; ++j)
+            if (p.rotational[static_cast<std::size_t>(j)] &&
+                (p.lowerCheck[static_cast<std::size_t>(j)] < -64.0 || p.upperCheck[static_cast<std::size_t>(j)] > 64.0))
+                p.reduceCheck.push_back(j);
         // size this thread's scratch now, so the first check on it does not allocate
         threadScratch(std::max(p.single.total, p.batch.total));
     }

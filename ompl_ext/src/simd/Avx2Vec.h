@@ -89,6 +89,19 @@ namespace ropras::ompl_ext::simd
         }
         friend Avx2Vec min(const Avx2Vec &a, const Avx2Vec &b) noexcept { return {_mm256_min_ps(a.v, b.v)}; }
         friend Avx2Vec max(const Avx2Vec &a, const Avx2Vec &b) noexcept { return {_mm256_max_ps(a.v, b.v)}; }
+        /// smallest / largest lane
+        friend float hmin(const Avx2Vec &a) noexcept
+        {
+            __m128 m = _mm_min_ps(_mm256_castps256_ps128(a.v), _mm256_extractf128_ps(a.v, 1));
+            m = _mm_min_ps(m, _mm_movehl_ps(m, m));
+            return _mm_cvtss_f32(_mm_min_ss(m, _mm_shuffle_ps(m, m, 1)));
+        }
+        friend float hmax(const Avx2Vec &a) noexcept
+        {
+            __m128 m = _mm_max_ps(_mm256_castps256_ps128(a.v), _mm256_extractf128_ps(a.v, 1));
+            m = _mm_max_ps(m, _mm_movehl_ps(m, m));
+            return _mm_cvtss_f32(_mm_max_ss(m, _mm_shuffle_ps(m, m, 1)));
+        }
         friend Avx2Vec abs(const Avx2Vec &a) noexcept { return {_mm256_andnot_ps(_mm256_set1_ps(-0.0f), a.v)}; }
         friend Avx2Vec sqrt(const Avx2Vec &a) noexcept { return {_mm256_sqrt_ps(a.v)}; }
         friend Avx2Vec round(const Avx2Vec &a) noexcept

@@ -775,11 +775,8 @@ namespace ropras::ompl_ext::simd
             Aabb box;
             for (int i = 0; i < 3; ++i)
             {
-                float a[W], b[W];
-                lo[i].store(a);
-                hi[i].store(b);
-                box.lo[i] = *std::min_element(a, a + W);
-                box.hi[i] = *std::max_element(b, b + W);
+                box.lo[i] = hmin(lo[i]);
+                box.hi[i] = hmax(hi[i]);
             }
             return box;
         }

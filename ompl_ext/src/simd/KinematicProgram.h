@@ -150,6 +150,8 @@ namespace ropras::ompl_ext::simd
         std::vector<double> lowerCheck, upperCheck;
         std::vector<char> unbounded;   ///< continuous joints: any finite value
         std::vector<char> rotational;  ///< variable drives a RotateZ frame
+        /// rotational variables whose limits reach past +-64 (an angle the batch loader may have to reduce)
+        std::vector<int> reduceCheck;
         ScratchLayout single, batch;
     };
 }  // namespace ropras::ompl_ext::simd

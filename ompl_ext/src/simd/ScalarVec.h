@@ -162,6 +162,21 @@ namespace ropras::ompl_ext::simd
                 r.v[i] = a.v[i] > b.v[i] ? a.v[i] : b.v[i];
             return r;
         }
+        /// smallest / largest lane
+        friend float hmin(const ScalarVec &a) noexcept
+        {
+            float m = a.v[0];
+            for (int i = 1; i < WIDTH; ++i)
+                m = a.v[i] < m ? a.v[i] : m;
+            return m;
+        }
+        friend float hmax(const ScalarVec &a) noexcept
+        {
+            float m = a.v[0];
+            for (int i = 1; i < WIDTH; ++i)
+                m = a.v[i] > m ? a.v[i] : m;
+            return m;
+        }
         friend ScalarVec abs(const ScalarVec &a) noexcept
         {
             ScalarVec r;
