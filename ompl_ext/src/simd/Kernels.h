@@ -428,11 +428,32 @@ namespace ropras::ompl_ext::simd
             return false;
         }
 
-        static bool selfSingle(const KinematicProgram &p, float *buf, Placed &placed,
+        static bool selfSingle(const KinematicProgram &p, const double *q, float *buf, Placed &placed,
                                const GroupBoxesSingle &g) noexcept
         {
             const ScratchLayout &l = p.single;
             const float *lx = buf + l.lx, *ly = buf + l.ly, *lz = buf + l.lz;
+            // per grid of free cells (SpherePairFreeCells): is q in a free cell? Looked up when first needed
+            std::uint32_t gridKnown = 0u, gridFree = 0u;
+            const auto inFreeCell = [&](int gi)
+            {
+                if (((gridKnown >> gi) & 1u) == 0u)
+                {
+                    const SelfGrid &sg = p.selfGrids[static_cast<std::size_t>(gi)];
+                    const auto cellOf = [&](int d)
+                    {
+                        const double x = (q[sg.var[d]] - static_cast<double>(sg.lower[d])) * sg.inv[d];
+                        return static_cast<std::uint32_t>(std::min(std::max(x, 0.0), sg.cells - 1.0));
+                    };
+                    const std::uint32_t cell =
+                        sg.var[1] < 0 ? cellOf(0) : cellOf(0) * static_cast<std::uint32_t>(sg.cells) + cellOf(1);
+                    const std::uint32_t bit =
+                        (p.selfGridBits[static_cast<std::size_t>(sg.bitsOffset) + (cell >> 5)] >> (cell & 31u)) & 1u;
+                    gridFree |= bit << gi;
+                    gridKnown |= 1u << gi;
+                }
+                return ((gridFree >> gi) & 1u) != 0u;
+            };
             for (const SelfPairRange &range : p.selfPairRanges)
             {
                 // no pair of the range touches when the boxes of the two groups are apart
@@ -454,6 +475,9 @@ namespace ropras::ompl_ext::simd
                     {
                         const int k = r.pairBegin + __builtin_ctz(bits);
                         bits &= bits - 1u;
+                        const int grid = p.selfPairGrid[static_cast<std::size_t>(k)];
+                        if (grid >= 0 && inFreeCell(grid))
+                            continue;
                         if (selfPairSingle(p, buf, placed, k))
                             return true;
                     }
@@ -517,7 +541,7 @@ namespace ropras::ompl_ext::simd
             if (p.links.size() > 64)
                 placeAll(p, buf, placed);
             const Aabb box = aabbSingle(p, groups);
-            return !envSingle(p, env, buf, placed, box) && !selfSingle(p, buf, placed, groups);
+            return !envSingle(p, env, buf, placed, box) && !selfSingle(p, q, buf, placed, groups);
         }
 
         // ------------------------------------------------------------ batch: one configuration per lane
