@@ -266,7 +266,7 @@ namespace ropras::ompl_ext
     }
 
     int VectorizedRRTConnect::extend(Tree &tree, const double *target, bool &reached, int fromNode,
-                                     const float *targetF)
+                                     const float *targetF, bool connect)
     {
         double distSq;
         std::size_t near;
@@ -301,7 +301,9 @@ namespace ropras::ompl_ext
         }
         else
         {
-            const double f = range_ / dist;
+            // a connection covers the distance in ceil(dist / range) equal steps (the last one is not a short
+            // remainder); an extension toward a sample takes one step of range
+            const double f = connect ? 1.0 / std::ceil(dist / range_) : range_ / dist;
             for (std::size_t k = 0; k < dof_; ++k)
                 to[k] = from[k] + f * (target[k] - from[k]);
         }
@@ -325,24 +327,28 @@ namespace ropras::ompl_ext
         const Tree &startTree = trees_[0], &goalTree = trees_[1];
         const int startNode = aIsStartTree ? nodeA : nodeB;
         const int goalNode = aIsStartTree ? nodeB : nodeA;
-        std::vector<int> startChain, goalChain;
+        // the path's states are allocated straight into it (one allocation per state, no chain vectors, no copy
+        // through a temporary state): start root ... startNode, then goalNode ... goal root
+        std::size_t startCount = 0, goalCount = 0;
         for (int n = startNode; n >= 0; n = startTree.parent[n])
-            startChain.push_back(n);
+            ++startCount;
         for (int n = goalNode; n >= 0; n = goalTree.parent[n])
-            goalChain.push_back(n);
+            ++goalCount;
         auto path = std::make_shared<ompl::geometric::PathGeometric>(si_);
-        ompl::base::State *state = si_->allocState();
-        auto append = [&](const Tree &tree, int n)
+        std::vector<ompl::base::State *> &states = path->getStates();
+        states.resize(startCount + goalCount, nullptr);
+        auto put = [&](const Tree &tree, int n, std::size_t at)
         {
+            states[at] = si_->allocState();
             std::copy(tree.q.data() + n * dof_, tree.q.data() + (n + 1) * dof_,
-                      state->as<ompl::base::RealVectorStateSpace::StateType>()->values);
-            path->append(state);
+                      states[at]->as<ompl::base::RealVectorStateSpace::StateType>()->values);
         };
-        for (auto it = startChain.rbegin(); it != startChain.rend(); ++it)
-            append(startTree, *it);
-        for (int n : goalChain)
-            append(goalTree, n);
-        si_->freeState(state);
+        std::size_t at = startCount;
+        for (int n = startNode; n >= 0; n = startTree.parent[n])
+            put(startTree, n, --at);
+        at = startCount;
+        for (int n = goalNode; n >= 0; n = goalTree.parent[n])
+            put(goalTree, n, at++);
         pdef_->addSolutionPath(path, false, 0.0, getName());
     }
 
@@ -433,7 +439,7 @@ namespace ropras::ompl_ext
                 {
                     bool hit;
                     // after the first step, continue from the node just added (the target lies straight ahead)
-                    const int node = extend(tb, targetBuf, hit, last);
+                    const int node = extend(tb, targetBuf, hit, last, nullptr, true);
                     if (node < 0)
                         break;
                     last = node;

@@ -210,3 +210,33 @@ TEST(VectorizedRRTConnect, RejectsBadSettings)
     planner->setRange(-1.0);
     EXPECT_THROW(planner->setup(), ropras::Error);
 }
+
+TEST(VectorizedRRTConnect, EveryTreeEdgeIsAtMostRangeAndValid)
+{
+    // Extensions take one step of range, connections ceil(d / range) equal steps: no edge of either tree is longer
+    // than range, every edge is a valid motion, and the solution path (tree edges only) is valid.
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    for (const char *range : {"0.07", "0.15", "0.4"})
+        for (const char *seed : {"3", "17"})
+        {
+            PlanningContext c = pointContext(true, {{"seed", seed}, {"range", range}, {"direct", "0"}});
+            ASSERT_EQ(solve(c), ompl::base::PlannerStatus::EXACT_SOLUTION) << "range " << range << " seed " << seed;
+            EXPECT_TRUE(c.setup->getSolutionPath().check());
+            ompl::base::PlannerData data(c.spaceInformation());
+            c.setup->getPlannerData(data);
+            ASSERT_GT(data.numEdges(), 2u);
+            const double r = std::stod(range);
+            const auto &si = c.spaceInformation();
+            for (unsigned v = 0; v < data.numVertices(); ++v)
+            {
+                std::vector<unsigned> out;
+                data.getEdges(v, out);
+                for (unsigned w : out)
+                {
+                    const ompl::base::State *a = data.getVertex(v).getState(), *b = data.getVertex(w).getState();
+                    EXPECT_LE(si->distance(a, b), r * (1.0 + 1e-9)) << "range " << range << " seed " << seed;
+                    EXPECT_TRUE(si->checkMotion(a, b)) << "range " << range << " seed " << seed;
+                }
+            }
+        }
+}

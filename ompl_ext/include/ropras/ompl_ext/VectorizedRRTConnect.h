@@ -28,10 +28,12 @@ namespace ropras::ompl_ext
           seeded from OMPL's RNG) instead of uniform random samples (`halton`);
         - tree balancing: always extend the smaller tree (`balance`);
         - dynamic domain: each node has a radius; samples farther than it from their nearest node are
-          rejected; the radius shrinks when an extension from the node fails and grows when one succeeds
-          (`dynamic_domain`, `dd_radius`, `dd_alpha`, `dd_min_radius`);
-        - connection: the other tree greedily extends toward each new node in steps of `range`, from its
-          nearest node first and then from each node it just added (no nearest-neighbour search per step);
+          rejected; a node's radius is set to `dd_radius` (default 5 rad, the lowest median cost per solve over
+          the MotionBenchMaker Panda set, doc/benchmarks.md) when an extension from it first fails, then shrinks
+          on each failure and grows on each success (`dynamic_domain`, `dd_radius`, `dd_alpha`, `dd_min_radius`);
+        - connection: the other tree greedily extends toward each new node in ceil(d / `range`) equal steps (d:
+          the remaining distance; no short last step), from its nearest node first and then from each node it
+          just added (no nearest-neighbour search per step);
         - direct connection: before growing any tree, the straight start-goal motion is checked once
           (`direct`); a raked check of an invalid motion usually fails within its first batches.
         Nearest neighbours: a linear scan over a float copy of the nodes, laid out in blocks of 8 (one SIMD
@@ -44,7 +46,8 @@ namespace ropras::ompl_ext
         plus a bound on the float rounding) is rejected without the double distance, which decides closer calls
         exactly as before.
         Per-solve fixed costs are kept out of solve(): tree storage is reserved in setup() and keeps its
-        capacity across clear(), the sampler state is allocated once, the validator is identified once (one
+        capacity across clear(), the solution path's states are allocated straight into the path (one allocation
+        per state, no copies), the sampler state is allocated once, the validator is identified once (one
         dynamic_cast per validator, not per solve), and the termination condition (a clock read and a lock) is
         evaluated once per 32 units of work (a motion check 8, an iteration 1). */
     class VectorizedRRTConnect : public ompl::base::Planner
@@ -103,8 +106,10 @@ namespace ropras::ompl_ext
         void sample(double *out, float *outF);
         /// extends \a tree toward \a target by at most range_ from its nearest node (or from \a fromNode when
         /// >= 0, without the dynamic-domain test); returns the new node index or -1. \a targetF: the target in
-        /// float, or nullptr
-        int extend(Tree &tree, const double *target, bool &reached, int fromNode = -1, const float *targetF = nullptr);
+        /// float, or nullptr. \a connect: a connection step, the remaining distance d in ceil(d / range_) equal
+        /// steps (an extension toward a sample takes one step of range_)
+        int extend(Tree &tree, const double *target, bool &reached, int fromNode = -1, const float *targetF = nullptr,
+                   bool connect = false);
         void buildSolution(int startNode, int goalNode, bool startTreeIsA);
         /// reserves room for \a nodes nodes in both trees
         void reserveTrees(std::size_t nodes);
@@ -129,7 +134,7 @@ namespace ropras::ompl_ext
         bool useHalton_{true};
         bool balance_{true};
         bool dynamicDomain_{true};
-        double ddRadius_{4.0};
+        double ddRadius_{5.0};
         double ddAlpha_{1.0e-4};
         double ddMinRadius_{1.0};
         bool direct_{true};
