@@ -255,14 +255,37 @@ namespace ropras::ompl_ext
                     dp[j] = static_cast<float>(q1[j] - q0[j]);
                 }
                 const double nd = static_cast<double>(n);
-                // rake: lane i walks the i-th of WIDTH consecutive segments, all lanes advance together
+                // rake: lane i walks the i-th of WIDTH consecutive segments, all lanes advance together, visiting
+                // the segment's offsets middle first in bit-reversed order (segment 4: 2 0 3 1), so that the
+                // samples checked so far stay evenly spread and a collision inside the motion is found early
                 const long long segment = (samples + WIDTH - 1) / WIDTH;
+                int bits = 0;
+                while ((1LL << bits) < segment)
+                    ++bits;
+                const long long half = (1LL << bits) >> 1;
+                long long r = 0;
+                const auto nextOffset = [&]
+                {
+                    for (;; ++r)
+                    {
+                        long long v = 0;
+                        for (int b = 0; b < bits; ++b)
+                            v |= ((r >> b) & 1LL) << (bits - 1 - b);
+                        v ^= half;
+                        if (v < segment)
+                        {
+                            ++r;
+                            return v;
+                        }
+                    }
+                };
                 double idx[WIDTH];
                 long long firstBad = -1;
                 for (long long j = 0; j < segment && firstBad < 0; ++j)
                 {
+                    const long long offset = nextOffset();
                     for (int i = 0; i < WIDTH; ++i)
-                        idx[i] = static_cast<double>(std::min(n, k0 + i * segment + j));
+                        idx[i] = static_cast<double>(std::min(n, k0 + i * segment + offset));
                     putSamples(p, q0p, dp, idx, nd, buf + p.batch.q);
                     K::framesBatch(p, buf);
                     const unsigned hit = K::collideBatch(p, env, buf, (1u << WIDTH) - 1u, true);

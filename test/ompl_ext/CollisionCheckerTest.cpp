@@ -452,6 +452,47 @@ TEST(CollisionCheckerTest, LastValidFractionContract)
     }
 }
 
+TEST(CollisionCheckerTest, EverySampleOfAMotionIsChecked)
+{
+    // one joint swings a 3 mm tip sphere on a circle of radius 0.5 m; a 3 mm obstacle on the circle touches the tip
+    // at exactly one sample of a motion at 1/32 rad (its neighbours are 2 * 0.5 * sin(1/64) = 15.6 mm away): for
+    // every motion length of 1-70 samples and every sample, the motion is invalid and lastValid stops just before it
+    const std::string urdf =
+        "<robot name=\"swing\"><link name=\"base\"/><link name=\"arm\"><collision><origin xyz=\"0.5 0 0\"/>"
+        "<geometry><sphere radius=\"0.003\"/></geometry></collision></link>"
+        "<joint name=\"j\" type=\"revolute\"><parent link=\"base\"/><child link=\"arm\"/><axis xyz=\"0 0 1\"/>"
+        "<limit lower=\"-3\" upper=\"3\" effort=\"1\" velocity=\"1\"/></joint></robot>";
+    const auto robot = RobotModel::fromUrdfString(urdf, ".", "swing.urdf");
+    const double res = 1.0 / 32.0, q0 = -1.0;
+    std::size_t motions = 0;
+    for (SimdBackend b : backends())
+    {
+        const CollisionChecker checker(robot, b);
+        for (long n = 1; n <= 70; ++n)
+        {
+            const double q1 = q0 + static_cast<double>(n) * res;  // exactly n steps
+            for (long k = 1; k <= n; ++k)
+            {
+                const double at = q0 + (q1 - q0) * static_cast<double>(k) / static_cast<double>(n);
+                Environment env;
+                env.addSphere("dot", {0.5 * std::cos(at), 0.5 * std::sin(at), 0.0}, 0.003);
+                double last = -1.0;
+                ASSERT_FALSE(checker.isMotionValid(env, &q0, &q1, res, &last))
+                    << simdBackendName(b) << ": " << n << " samples, the one in contact: " << k;
+                ASSERT_DOUBLE_EQ(last, static_cast<double>(k - 1) / static_cast<double>(n))
+                    << simdBackendName(b) << ": " << n << " samples, the one in contact: " << k;
+                ++motions;
+            }
+            // the obstacle halfway between two samples is missed at this resolution (the contract: samples only)
+            Environment between;
+            const double mid = q0 + res * 0.5;
+            between.addSphere("dot", {0.5 * std::cos(mid), 0.5 * std::sin(mid), 0.0}, 0.003);
+            EXPECT_TRUE(checker.isMotionValid(between, &q0, &q1, res)) << n;
+        }
+    }
+    EXPECT_EQ(motions, backends().size() * (70u * 71u / 2u));
+}
+
 TEST(CollisionCheckerTest, NanAndOutOfLimitConfigurationsAreInvalid)
 {
     REQUIRE_SHARED();
