@@ -269,23 +269,21 @@ namespace ropras::ompl_ext
         // the grid of free cells: every joint revolute with finite limits (continuous joints are not reduced to
         // one turn by the checkers, so their values can leave any finite grid)
         const int n = options.freeCellsPerJoint;
+        const auto variableOf = [&](const Dim &d) {
+            return frames[static_cast<std::size_t>(chain[d.side].frames[static_cast<std::size_t>(d.position)])]
+                .variable;
+        };
         bool gridable = n > 0 && nDims > 0 && !kept.empty();
         for (const Dim &d : dims)
-            gridable =
-                gridable && std::isfinite(d.lower) && std::isfinite(d.upper) && d.upper > d.lower &&
-                model
-                        .joints()[static_cast<std::size_t>(
-                            frames[static_cast<std::size_t>(chain[d.side].frames[static_cast<std::size_t>(d.position)])]
-                                .variable)]
-                        .type == JointType::Revolute;
+            gridable = gridable && std::isfinite(d.lower) && std::isfinite(d.upper) && d.upper > d.lower &&
+                       model.joints()[static_cast<std::size_t>(variableOf(d))].type == JointType::Revolute;
         if (!gridable)
             return result;
         SpherePairFreeCells &grid = result.freeCells;
         grid.cells = n;
         for (const Dim &d : dims)
         {
-            grid.variables.push_back(
-                frames[static_cast<std::size_t>(chain[d.side].frames[static_cast<std::size_t>(d.position)])].variable);
+            grid.variables.push_back(variableOf(d));
             grid.lower.push_back(d.lower);
             grid.width.push_back((d.upper - d.lower) / n);
         }

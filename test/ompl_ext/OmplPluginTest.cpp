@@ -88,7 +88,6 @@ TEST(OmplPlugin, MotionContractMatchesDenseReference)
     auto sampler = si->allocStateSampler();
     ompl::base::State *s1 = si->allocState(), *s2 = si->allocState(), *last = si->allocState();
     int invalidMotions = 0, validMotions = 0;
-    const double step = 1.0 / c.motionValidator->resolution();
     for (int trial = 0; trial < 600; ++trial)
     {
         sampleValidState(c, *sampler, s1);
@@ -112,7 +111,6 @@ TEST(OmplPlugin, MotionContractMatchesDenseReference)
         EXPECT_LT(si->distance(interp, last), 1e-9);
         si->freeState(interp);
     }
-    (void)step;
     EXPECT_GT(invalidMotions, 50);
     EXPECT_GT(validMotions, 50);
     EXPECT_EQ(c.motionValidator->getValidMotionCount(), static_cast<unsigned>(validMotions));
