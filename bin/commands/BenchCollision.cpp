@@ -296,7 +296,7 @@ namespace
         const std::vector<Row> rows{
             {"fk_ns", "FK only, batch of 8 (per config)", median(fk), totalConfigs},
             {"batch_ns", "batch of 8 distinct (per config)", median(batch), totalConfigs},
-            {"batch_all_ns", "batch of 8 distinct, all valid? (per config)", median(batchAll), totalConfigs},
+            {"batch_all_ns", "batch of 8, all valid? (per config)", median(batchAll), totalConfigs},
             {"single_valid_ns", "single config, valid", median(singleValid), nValid},
             {"single_invalid_ns", "single config, invalid", median(singleInvalid), nInvalid},
             {"edge_valid_ns", "1 rad edge at 1/32 rad, valid", median(edgeValid), nEdgeValid},
