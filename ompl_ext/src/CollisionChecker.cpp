@@ -408,23 +408,14 @@ namespace ropras::ompl_ext
         const RobotModel &model = *robot_;
         p.dof = static_cast<int>(model.dof());
 
-        p.lower.resize(model.dof());
-        p.upper.resize(model.dof());
-        p.unbounded.assign(model.dof(), 0);
         p.rotational.assign(model.dof(), 0);
-        for (std::size_t j = 0; j < model.dof(); ++j)
-        {
-            const PlanningJoint &joint = model.joints()[j];
-            p.lower[j] = joint.lower;
-            p.upper[j] = joint.upper;
-            p.unbounded[j] = joint.type == JointType::Continuous ? 1 : 0;
-        }
-        // the same test as withinLimits as one pair of comparisons (NaN and infinities fail both forms)
+        // the limit test as one pair of comparisons (NaN fails both, infinities one; continuous joints: any finite)
         const double big = std::numeric_limits<double>::max();
-        for (std::size_t j = 0; j < model.dof(); ++j)
+        for (const PlanningJoint &joint : model.joints())
         {
-            p.lowerCheck.push_back(p.unbounded[j] ? -big : std::max(p.lower[j], -big));
-            p.upperCheck.push_back(p.unbounded[j] ? big : std::min(p.upper[j], big));
+            const bool unbounded = joint.type == JointType::Continuous;
+            p.lowerCheck.push_back(unbounded ? -big : std::max(joint.lower, -big));
+            p.upperCheck.push_back(unbounded ? big : std::min(joint.upper, big));
         }
 
         const auto &frames = model.frames();
@@ -621,37 +612,32 @@ namespace ropras::ompl_ext
             // its grid of free cells, when the batch q block holds the grid's variables unreduced (|limits| <= 64)
             int grid = -1;
             const SpherePairFreeCells &cells = reach.freeCells;
-            bool usable = !cells.variables.empty() && cells.variables.size() <= 2 && cells.cells > 0 &&
-                          static_cast<int>(p.selfGrids.size()) < simd::MAX_SELF_GRIDS;
-            for (const int v : cells.variables)
-                usable = usable && std::abs(model.joints()[static_cast<std::size_t>(v)].lower) <= 64.0 &&
-                         std::abs(model.joints()[static_cast<std::size_t>(v)].upper) <= 64.0;
-            // link pairs over the same joints share one grid: a cell is free when it is free for each of them
-            for (std::size_t gi = 0; usable && gi < p.selfGrids.size(); ++gi)
+            bool usable = !cells.variables.empty() && cells.variables.size() <= 2 && cells.cells > 0;
+            simd::SelfGrid g;
+            g.cells = cells.cells;
+            for (std::size_t d = 0; usable && d < cells.variables.size(); ++d)
             {
-                const simd::SelfGrid &g = p.selfGrids[gi];
-                const std::size_t n = cells.variables.size();
-                if (g.cells != cells.cells || g.var[0] != cells.variables[0] ||
-                    g.var[1] != (n > 1 ? cells.variables[1] : -1) || g.lower[0] != static_cast<float>(cells.lower[0]) ||
-                    g.inv[0] != static_cast<float>(1.0 / cells.width[0]) ||
-                    (n > 1 && (g.lower[1] != static_cast<float>(cells.lower[1]) ||
-                               g.inv[1] != static_cast<float>(1.0 / cells.width[1]))))
-                    continue;
-                for (std::size_t w = 0; w < cells.bits.size(); ++w)
-                    p.selfGridBits[static_cast<std::size_t>(g.bitsOffset) + w] &= cells.bits[w];
-                grid = static_cast<int>(gi);
-                usable = false;
+                const PlanningJoint &joint = model.joints()[static_cast<std::size_t>(cells.variables[d])];
+                usable = std::abs(joint.lower) <= 64.0 && std::abs(joint.upper) <= 64.0;
+                g.var[d] = cells.variables[d];
+                g.lower[d] = static_cast<float>(cells.lower[d]);
+                g.inv[d] = static_cast<float>(1.0 / cells.width[d]);
             }
-            if (usable)
+            // link pairs over the same grid share it: a cell is free when it is free for each of them
+            const auto sameGrid = [&g](const simd::SelfGrid &o)
             {
-                simd::SelfGrid g;
-                for (std::size_t d = 0; d < cells.variables.size(); ++d)
-                {
-                    g.var[d] = cells.variables[d];
-                    g.lower[d] = static_cast<float>(cells.lower[d]);
-                    g.inv[d] = static_cast<float>(1.0 / cells.width[d]);
-                }
-                g.cells = cells.cells;
+                return o.cells == g.cells && std::equal(o.var, o.var + 2, g.var) &&
+                       std::equal(o.lower, o.lower + 2, g.lower) && std::equal(o.inv, o.inv + 2, g.inv);
+            };
+            const auto shared = std::find_if(p.selfGrids.begin(), p.selfGrids.end(), sameGrid);
+            if (usable && shared != p.selfGrids.end())
+            {
+                for (std::size_t w = 0; w < cells.bits.size(); ++w)
+                    p.selfGridBits[static_cast<std::size_t>(shared->bitsOffset) + w] &= cells.bits[w];
+                grid = static_cast<int>(shared - p.selfGrids.begin());
+            }
+            else if (usable && static_cast<int>(p.selfGrids.size()) < simd::MAX_SELF_GRIDS)
+            {
                 g.bitsOffset = static_cast<int>(p.selfGridBits.size());
                 p.selfGridBits.insert(p.selfGridBits.end(), cells.bits.begin(), cells.bits.end());
                 grid = static_cast<int>(p.selfGrids.size());

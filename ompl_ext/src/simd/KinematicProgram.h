@@ -145,10 +145,8 @@ namespace ropras::ompl_ext::simd
         std::vector<int> selfPairGrid;
         std::vector<SelfGrid> selfGrids;
         std::vector<std::uint32_t> selfGridBits;
-        std::vector<double> lower, upper;  ///< per variable
         /// per variable: v is valid iff lowerCheck <= v <= upperCheck (finite bounds; +-DBL_MAX when unbounded)
         std::vector<double> lowerCheck, upperCheck;
-        std::vector<char> unbounded;   ///< continuous joints: any finite value
         std::vector<char> rotational;  ///< variable drives a RotateZ frame
         /// rotational variables whose limits reach past +-64 (an angle the batch loader may have to reduce)
         std::vector<int> reduceCheck;
