@@ -447,9 +447,7 @@ namespace ropras::ompl_ext::simd
                     };
                     const std::uint32_t cell =
                         sg.var[1] < 0 ? cellOf(0) : cellOf(0) * static_cast<std::uint32_t>(sg.cells) + cellOf(1);
-                    const std::uint32_t bit =
-                        (p.selfGridBits[static_cast<std::size_t>(sg.bitsOffset) + (cell >> 5)] >> (cell & 31u)) & 1u;
-                    gridFree |= bit << gi;
+                    gridFree |= (p.cellFree(sg, cell) ? 1u : 0u) << gi;
                     gridKnown |= 1u << gi;
                 }
                 return ((gridFree >> gi) & 1u) != 0u;
@@ -853,13 +851,9 @@ namespace ropras::ompl_ext::simd
                     g.var[1] < 0 ? cellOf(0) : fma(cellOf(0), V::broadcast(static_cast<float>(g.cells)), cellOf(1));
                 float c[W];
                 cell.store(c);
-                const std::uint32_t *bits = p.selfGridBits.data() + g.bitsOffset;
                 unsigned lanes = 0u;
                 for (int i = 0; i < W; ++i)
-                {
-                    const auto k = static_cast<std::uint32_t>(c[i]);
-                    lanes |= ((bits[k >> 5] >> (k & 31u)) & 1u) << i;
-                }
+                    lanes |= (p.cellFree(g, static_cast<std::uint32_t>(c[i])) ? 1u : 0u) << i;
                 gridLanes[gi] = lanes;
                 gridKnown |= 1u << gi;
                 return lanes;

@@ -151,6 +151,12 @@ namespace ropras::ompl_ext::simd
         /// rotational variables whose limits reach past +-64 (an angle the batch loader may have to reduce)
         std::vector<int> reduceCheck;
         ScratchLayout single, batch;
+
+        /// bit \a cell of grid \a g: the cell is free
+        bool cellFree(const SelfGrid &g, std::uint32_t cell) const noexcept
+        {
+            return ((selfGridBits[static_cast<std::size_t>(g.bitsOffset) + (cell >> 5)] >> (cell & 31u)) & 1u) != 0u;
+        }
     };
 }  // namespace ropras::ompl_ext::simd
 
