@@ -477,8 +477,9 @@ namespace ropras::ompl_ext
                         op.permId = k;
                 if (op.permId < 0)  // two columns from the same source: not a permutation after all
                     op.permutation = false;
+                op.flipColumns = 0u;
                 for (int j = 0; j < 3; ++j)
-                    op.signMask[j] = op.sign[j] < 0.0f ? -0.0f : 0.0f;
+                    op.flipColumns |= (op.sign[j] < 0.0f ? 1u : 0u) << j;
             }
             if (!op.permutation)
                 op.permId = 0;

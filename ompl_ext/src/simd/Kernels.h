@@ -544,23 +544,78 @@ namespace ropras::ompl_ext::simd
 
         // ------------------------------------------------------------ batch: one configuration per lane
 
-        /// m = rotation columns of P picked by the permutation C0 C1 C2, with the frame's sign flips
+        /// the rotation columns of m (rows r00 r01 r02, r10 ...) reordered in place: new column j = old column Cj
         template <int C0, int C1, int C2>
-        static void permuteColumns(const V *pm, const V *sg, V *m) noexcept
+        static void permuteColumns(V *m) noexcept
         {
             for (int i = 0; i < 3; ++i)
             {
-                m[3 * i] = flipSign(pm[3 * i + C0], sg[0]);
-                m[3 * i + 1] = flipSign(pm[3 * i + C1], sg[1]);
-                m[3 * i + 2] = flipSign(pm[3 * i + C2], sg[2]);
+                const V a = m[3 * i + C0], b = m[3 * i + C1], c = m[3 * i + C2];
+                m[3 * i] = a;
+                m[3 * i + 1] = b;
+                m[3 * i + 2] = c;
+            }
+        }
+
+        /** \brief m = m * offset (12-float transforms, WIDTH lanes each) in place. The translation goes first (it
+            uses m's rotation) and only for the offset's non-zero components; a signed-permutation rotation is
+            column moves and sign-bit XORs of the flipped columns; any other rotation is three FMAs per entry,
+            row by row (three live values, not a second matrix). */
+        static void applyOffset(const FrameOp &op, V *m) noexcept
+        {
+            const float *o = op.offset;
+            for (int k = 0; k < 3; ++k)
+                if ((op.translationMask >> k) & 1u)
+                {
+                    const V ok = V::broadcast(o[9 + k]);
+                    for (int i = 0; i < 3; ++i)
+                        m[9 + i] = fma(m[3 * i + k], ok, m[9 + i]);
+                }
+            if (op.permutation)
+            {
+                switch (op.permId)
+                {
+                    case 0:
+                        break;
+                    case 1:
+                        permuteColumns<0, 2, 1>(m);
+                        break;
+                    case 2:
+                        permuteColumns<1, 0, 2>(m);
+                        break;
+                    case 3:
+                        permuteColumns<1, 2, 0>(m);
+                        break;
+                    case 4:
+                        permuteColumns<2, 0, 1>(m);
+                        break;
+                    default:
+                        permuteColumns<2, 1, 0>(m);
+                        break;
+                }
+                for (int j = 0; j < 3; ++j)
+                    if ((op.flipColumns >> j) & 1u)
+                    {
+                        const V sg = V::broadcast(-0.0f);
+                        for (int i = 0; i < 3; ++i)
+                            m[3 * i + j] = flipSign(m[3 * i + j], sg);
+                    }
+                return;
+            }
+            for (int i = 0; i < 3; ++i)
+            {
+                const V a = m[3 * i], b = m[3 * i + 1], c = m[3 * i + 2];
+                for (int j = 0; j < 3; ++j)
+                    m[3 * i + j] =
+                        fma(a, V::broadcast(o[j]), fma(b, V::broadcast(o[3 + j]), c * V::broadcast(o[6 + j])));
             }
         }
 
         /** \brief FK of WIDTH configurations: per variable joint values in buf + batch.q (WIDTH floats each,
             angles already reduced); writes frames and link bounds (WIDTH floats each). Spheres: placeLinkBatch.
-            The chain stays in registers (a frame whose parent is the previous frame does not reload it); offsets
-            that are signed permutations are pre-decoded (column moves and sign-bit XORs, no branch per
-            element); each frame's link bounds are placed while it is in registers. */
+            One frame lives in registers and is updated in place (a frame whose parent is the previous frame does
+            not reload it); the offset is applied with only the work its form needs (applyOffset); each frame's
+            link bounds are placed while it is in registers. */
         static void framesBatch(const KinematicProgram &p, float *buf) noexcept
         {
             const ScratchLayout &l = p.batch;
@@ -576,17 +631,17 @@ namespace ropras::ompl_ext::simd
             float *t = buf + l.frames;
             float *lx = buf + l.lx, *ly = buf + l.ly, *lz = buf + l.lz;
             // the program's arrays in locals: the stores below may alias anything (members would be reloaded)
+            const FrameOp *frames = p.frames.data();
             const LinkOp *links = p.links.data();
             const int *frameLinks = p.frameLinks.data();
-            V pm[12];  // the previous frame (frame 0 has no parent: never read before it is set)
-            for (V &v : pm)
+            V m[12];  // frame 0 has no parent: never read before it is set
+            for (V &v : m)
                 v = V::zero();
             const int nFrames = static_cast<int>(p.frames.size());
             for (int f = 0; f < nFrames; ++f)
             {
-                const FrameOp &op = p.frames[static_cast<std::size_t>(f)];
+                const FrameOp &op = frames[f];
                 float *tf = t + 12 * W * f;
-                V m[12];
                 if (op.parent < 0)
                 {
                     for (int i = 0; i < 12; ++i)
@@ -598,47 +653,9 @@ namespace ropras::ompl_ext::simd
                     {
                         const float *pt = t + 12 * W * op.parent;
                         for (int i = 0; i < 12; ++i)
-                            pm[i] = V::load(pt + W * i);
+                            m[i] = V::load(pt + W * i);
                     }
-                    const float *o = op.offset;
-                    const V o9 = V::broadcast(o[9]), o10 = V::broadcast(o[10]), o11 = V::broadcast(o[11]);
-                    for (int i = 0; i < 3; ++i)
-                        m[9 + i] = fma(pm[3 * i], o9, fma(pm[3 * i + 1], o10, fma(pm[3 * i + 2], o11, pm[9 + i])));
-                    if (op.permutation)
-                    {
-                        const V sg[3] = {V::broadcast(op.signMask[0]), V::broadcast(op.signMask[1]),
-                                         V::broadcast(op.signMask[2])};
-                        switch (op.permId)
-                        {
-                            case 0:
-                                permuteColumns<0, 1, 2>(pm, sg, m);
-                                break;
-                            case 1:
-                                permuteColumns<0, 2, 1>(pm, sg, m);
-                                break;
-                            case 2:
-                                permuteColumns<1, 0, 2>(pm, sg, m);
-                                break;
-                            case 3:
-                                permuteColumns<1, 2, 0>(pm, sg, m);
-                                break;
-                            case 4:
-                                permuteColumns<2, 0, 1>(pm, sg, m);
-                                break;
-                            default:
-                                permuteColumns<2, 1, 0>(pm, sg, m);
-                                break;
-                        }
-                    }
-                    else
-                    {
-                        for (int j = 0; j < 3; ++j)
-                        {
-                            const V c0 = V::broadcast(o[j]), c1 = V::broadcast(o[3 + j]), c2 = V::broadcast(o[6 + j]);
-                            for (int i = 0; i < 3; ++i)
-                                m[3 * i + j] = fma(pm[3 * i], c0, fma(pm[3 * i + 1], c1, pm[3 * i + 2] * c2));
-                        }
-                    }
+                    applyOffset(op, m);
                 }
                 if (op.motion == Motion::RotateZ)
                 {
@@ -657,10 +674,7 @@ namespace ropras::ompl_ext::simd
                         m[9 + i] = fma(d, m[3 * i + 2], m[9 + i]);
                 }
                 for (int i = 0; i < 12; ++i)
-                {
                     m[i].store(tf + W * i);
-                    pm[i] = m[i];
-                }
                 for (int k = op.linkBegin; k < op.linkEnd; ++k)
                 {
                     const int li = frameLinks[k];

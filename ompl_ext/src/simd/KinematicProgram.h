@@ -37,10 +37,10 @@ namespace ropras::ompl_ext::simd
         float sign[3]{1, 1, 1};
         /// offset translation components that are non-zero (bit k)
         unsigned translationMask{7};
-        /// pre-decoded permutation for the batch path: index into PERMUTATIONS (perm), and per column j the
-        /// sign as +0.0f / -0.0f, applied with an XOR of the sign bit (no branch, no multiplication)
+        /// pre-decoded permutation for the batch path: index into PERMUTATIONS (perm), and the columns j whose
+        /// sign is negative (bit j), flipped with an XOR of the sign bit (no multiplication)
         int permId{0};
-        float signMask[3]{0.0f, 0.0f, 0.0f};
+        unsigned flipColumns{0};
         /// the links carried by this frame: KinematicProgram::frameLinks[linkBegin, linkEnd)
         int linkBegin{0}, linkEnd{0};
     };
