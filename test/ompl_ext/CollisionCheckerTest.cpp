@@ -642,6 +642,28 @@ namespace
     <origin xyz="0 0.2 0" rpy="-0.4 0 0.7"/><axis xyz="0 1 0"/></joint>
   <joint name="j_fix" type="fixed"><parent link="c"/><child link="d"/><origin xyz="0.15 0 0" rpy="0 0 0.5"/></joint>
 </robot>)";
+
+    /// largest distance of the batch and single sphere centres of 8 rows \a qs from the reference FK
+    double worstCentreError(const RobotModel &robot, const CollisionChecker &checker, const std::vector<double> &qs)
+    {
+        const std::size_t ns = robot.spheres().size(), dof = robot.dof();
+        std::vector<float> single(4 * ns), batch(4 * ns * 8);
+        checker.sphereCentersBatch(qs.data(), batch.data());
+        double worst = 0.0;
+        for (std::size_t i = 0; i < 8; ++i)
+        {
+            const auto ref = robot.sphereCentersReference(qs.data() + dof * i);
+            checker.sphereCenters(qs.data() + dof * i, single.data());
+            for (std::size_t s = 0; s < ns; ++s)
+            {
+                const Eigen::Vector3d fromSingle(single[4 * s], single[4 * s + 1], single[4 * s + 2]);
+                const Eigen::Vector3d fromBatch(batch[(4 * s) * 8 + i], batch[(4 * s + 1) * 8 + i],
+                                                batch[(4 * s + 2) * 8 + i]);
+                worst = std::max({worst, (fromSingle - ref[s]).norm(), (fromBatch - ref[s]).norm()});
+            }
+        }
+        return worst;
+    }
 }  // namespace
 
 TEST(CollisionCheckerTest, EveryJointTypeMatchesReferenceFk)
@@ -650,11 +672,9 @@ TEST(CollisionCheckerTest, EveryJointTypeMatchesReferenceFk)
     ASSERT_EQ(robot->dof(), 3u);
     std::mt19937_64 rng(900);
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    const std::size_t ns = robot->spheres().size();
     for (SimdBackend backend : backends())
     {
         CollisionChecker checker(robot, backend);
-        std::vector<float> single(4 * ns), batch(4 * ns * 8);
         std::vector<double> qs(3 * 8);
         double worst = 0.0;
         for (int k = 0; k < 2000; ++k)
@@ -666,21 +686,7 @@ TEST(CollisionCheckerTest, EveryJointTypeMatchesReferenceFk)
                 // continuous: any finite value, also far from zero (range reduction in double)
                 qs[3 * i + 2] = (k % 4 == 0 ? 1000.0 : 10.0) * (2.0 * u(rng) - 1.0);
             }
-            checker.sphereCentersBatch(qs.data(), batch.data());
-            for (int i = 0; i < 8; ++i)
-            {
-                const auto ref = robot->sphereCentersReference(qs.data() + 3 * i);
-                checker.sphereCenters(qs.data() + 3 * i, single.data());
-                for (std::size_t s = 0; s < ns; ++s)
-                {
-                    worst = std::max(
-                        worst, (Eigen::Vector3d(single[4 * s], single[4 * s + 1], single[4 * s + 2]) - ref[s]).norm());
-                    worst = std::max(worst, (Eigen::Vector3d(batch[(4 * s) * 8 + i], batch[(4 * s + 1) * 8 + i],
-                                                             batch[(4 * s + 2) * 8 + i]) -
-                                             ref[s])
-                                                .norm());
-                }
-            }
+            worst = std::max(worst, worstCentreError(*robot, checker, qs));
         }
         EXPECT_LT(worst, 1e-5) << simdBackendName(backend);
         // the continuous joint accepts any finite value; the prismatic one is bounded
@@ -689,6 +695,76 @@ TEST(CollisionCheckerTest, EveryJointTypeMatchesReferenceFk)
         q[1] = 0.41;
         EXPECT_FALSE(checker.isValid(Environment(), q.data()));
     }
+}
+
+namespace
+{
+    /** \brief Two arms on one base (a tree, not a chain): the second arm's first frame does not follow its parent
+        in the frame order, so both FK paths must reload the parent's frame. The arms reach each other
+        (self-collision pairs across the branches). */
+    const char *const TWO_ARMS_URDF = R"(<?xml version="1.0"?>
+<robot name="two_arms">
+  <link name="base"><collision><geometry><sphere radius="0.06"/></geometry></collision></link>
+  <link name="l1"><collision><origin xyz="0 0 0.1"/><geometry><sphere radius="0.04"/></geometry></collision>
+                  <collision><origin xyz="0 0 0.2"/><geometry><sphere radius="0.04"/></geometry></collision></link>
+  <link name="l2"><collision><origin xyz="0.1 0 0"/><geometry><sphere radius="0.035"/></geometry></collision>
+                  <collision><origin xyz="0.2 0 0"/><geometry><sphere radius="0.03"/></geometry></collision></link>
+  <link name="l3"><collision><origin xyz="0.08 0.02 0"/><geometry><sphere radius="0.03"/></geometry></collision></link>
+  <link name="r1"><collision><origin xyz="0 0 0.1"/><geometry><sphere radius="0.04"/></geometry></collision>
+                  <collision><origin xyz="0 0 0.2"/><geometry><sphere radius="0.04"/></geometry></collision></link>
+  <link name="r2"><collision><origin xyz="-0.1 0 0"/><geometry><sphere radius="0.035"/></geometry></collision>
+                  <collision><origin xyz="-0.2 0 0"/><geometry><sphere radius="0.03"/></geometry></collision></link>
+  <link name="r3"><collision><origin xyz="0 0 0.05"/><geometry><sphere radius="0.03"/></geometry></collision></link>
+  <joint name="left_1" type="revolute"><parent link="base"/><child link="l1"/>
+    <origin xyz="0 0.15 0.05" rpy="0 0 0"/><axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="1" velocity="1"/></joint>
+  <joint name="left_2" type="revolute"><parent link="l1"/><child link="l2"/>
+    <origin xyz="0 0 0.25" rpy="1.5707963267948966 0 0"/><axis xyz="0 0 1"/><limit lower="-2" upper="2" effort="1" velocity="1"/></joint>
+  <joint name="left_3" type="revolute"><parent link="l2"/><child link="l3"/>
+    <origin xyz="0.25 0 0" rpy="0.2 -0.3 0.4"/><axis xyz="0.3 0.8 0.1"/><limit lower="-2.5" upper="2.5" effort="1" velocity="1"/></joint>
+  <joint name="right_1" type="revolute"><parent link="base"/><child link="r1"/>
+    <origin xyz="0 -0.15 0.05" rpy="0 0 3.141592653589793"/><axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="1" velocity="1"/></joint>
+  <joint name="right_2" type="revolute"><parent link="r1"/><child link="r2"/>
+    <origin xyz="0 0 0.25" rpy="-1.5707963267948966 0 0"/><axis xyz="0 0 1"/><limit lower="-2" upper="2" effort="1" velocity="1"/></joint>
+  <joint name="right_3" type="prismatic"><parent link="r2"/><child link="r3"/>
+    <origin xyz="-0.25 0 0" rpy="0 0.5 0"/><axis xyz="0 1 0"/><limit lower="-0.1" upper="0.15" effort="1" velocity="1"/></joint>
+</robot>)";
+}  // namespace
+
+TEST(CollisionCheckerTest, BranchingRobotMatchesReferenceFkAndBruteForce)
+{
+    const auto robot = RobotModel::fromUrdfString(TWO_ARMS_URDF, ".", "two_arms.urdf");
+    ASSERT_EQ(robot->dof(), 6u);
+    // sphere centres of both paths against the reference FK, over the whole joint range
+    std::mt19937_64 rng(950);
+    for (SimdBackend backend : backends())
+    {
+        CollisionChecker checker(robot, backend);
+        std::vector<double> qs;
+        double worst = 0.0;
+        for (int k = 0; k < 500; ++k)
+        {
+            qs.clear();
+            for (int i = 0; i < 8; ++i)
+            {
+                const auto q = randomConfig(*robot, rng);
+                qs.insert(qs.end(), q.begin(), q.end());
+            }
+            worst = std::max(worst, worstCentreError(*robot, checker, qs));
+        }
+        EXPECT_LT(worst, 1e-5) << simdBackendName(backend);
+    }
+    // verdicts of every path against the brute force: the arms against each other, then with obstacles
+    const VerdictStats self = checkVerdicts(robot, Environment(), 3000, 951);
+    EXPECT_GT(self.invalid, 100) << "random configurations must include arm-against-arm contacts";
+    EXPECT_GT(self.valid, 1000);
+    EXPECT_LT(self.nearContact, 15);
+    Environment env;
+    env.addSphere("ball", {0.25, 0.0, 0.35}, 0.08);
+    env.addBox("plate", pose({0.0, 0.0, 0.55}), {0.4, 0.3, 0.02});
+    const VerdictStats world = checkVerdicts(robot, env, 3000, 952);
+    EXPECT_GT(world.invalid, self.invalid);
+    EXPECT_GT(world.valid, 500);
+    EXPECT_LT(world.nearContact, 15);
 }
 
 namespace
