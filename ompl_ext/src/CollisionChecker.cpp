@@ -446,6 +446,14 @@ namespace ropras::ompl_ext
                     op.offsetColumns[4 * j + i] = i == 3 ? 0.0f
                                                          : static_cast<float>(j < 3 ? frame.offset.linear()(i, j)
                                                                                     : frame.offset.translation()(i));
+            for (int k = 0; k < 3; ++k)
+                for (int i = 0; i < 4; ++i)
+                {
+                    op.offsetPairs[8 * k + i] = static_cast<float>(frame.offset.linear()(k, 0));
+                    op.offsetPairs[8 * k + 4 + i] = static_cast<float>(frame.offset.linear()(k, 1));
+                    op.offsetPairs[24 + 8 * k + i] = static_cast<float>(frame.offset.linear()(k, 2));
+                    op.offsetPairs[24 + 8 * k + 4 + i] = static_cast<float>(frame.offset.translation()(k));
+                }
             // fold signed-permutation rotations and zero translation components
             op.permutation = true;
             for (int j = 0; j < 3 && op.permutation; ++j)
@@ -593,8 +601,17 @@ namespace ropras::ompl_ext
         p.sphereSlots = static_cast<int>(p.sx.size());
         p.linkPadded = static_cast<int>(roundUp(p.links.size()));
         p.linkRadius.assign(static_cast<std::size_t>(p.linkPadded), 0.0f);
+        p.linkBoundPairs.assign(16 * p.links.size(), 1.0f);
         for (std::size_t l = 0; l < p.links.size(); ++l)
+        {
             p.linkRadius[l] = p.links[l].br;
+            for (int i = 0; i < 4; ++i)
+            {
+                p.linkBoundPairs[16 * l + static_cast<std::size_t>(i)] = p.links[l].bx;
+                p.linkBoundPairs[16 * l + 4 + static_cast<std::size_t>(i)] = p.links[l].by;
+                p.linkBoundPairs[16 * l + 8 + static_cast<std::size_t>(i)] = p.links[l].bz;
+            }
+        }
         // the sphere at each program slot (RobotModel order; padding repeats a sphere of the same link)
         std::vector<int> sphereOfSlot(p.sx.size(), -1);
         for (std::size_t s = 0; s < spheres.size(); ++s)

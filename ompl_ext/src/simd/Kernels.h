@@ -158,6 +158,37 @@ namespace ropras::ompl_ext::simd
         std::memcpy(p, &r, sizeof(r));
     }
 
+    /// 8 floats with GCC/Clang vector extensions (AVX where available): two 4-float columns side by side
+    typedef float Row8 __attribute__((vector_size(32)));
+    typedef int Index8 __attribute__((vector_size(32)));
+    constexpr Index8 LOW_TWICE = {0, 1, 2, 3, 0, 1, 2, 3};
+    constexpr Index8 HIGH_TWICE = {4, 5, 6, 7, 4, 5, 6, 7};
+    constexpr Index8 SWAP_HALVES = {4, 5, 6, 7, 0, 1, 2, 3};
+    /// with a second operand of zeros: (0 | high half)
+    constexpr Index8 ZERO_LOW = {8, 9, 10, 11, 4, 5, 6, 7};
+
+    inline Row8 loadRow8(const float *p) noexcept
+    {
+        Row8 r;
+        std::memcpy(&r, p, sizeof(r));
+        return r;
+    }
+
+    inline void storeRow8(float *p, const Row8 &r) noexcept
+    {
+        std::memcpy(p, &r, sizeof(r));
+    }
+
+    inline Row4 lowHalf(const Row8 &r) noexcept
+    {
+        return Row4{r[0], r[1], r[2], r[3]};
+    }
+
+    inline Row4 highHalf(const Row8 &r) noexcept
+    {
+        return Row4{r[4], r[5], r[6], r[7]};
+    }
+
     /// world boxes (x, y, z, unused) of the link groups (LinkGroup) of one configuration
     struct GroupBoxesSingle
     {
@@ -234,7 +265,6 @@ namespace ropras::ompl_ext::simd
             // and its link bounds are placed from the registers (R b + t: three FMAs per link)
             float *t = buf + l.frames;
             float *lx = buf + l.lx, *ly = buf + l.ly, *lz = buf + l.lz;
-            Row4 pc[4] = {};
             GroupBoxesSingle scratchGroups;
             GroupBoxesSingle &g = groups != nullptr ? *groups : scratchGroups;
             const Row4 far = {1e30f, 1e30f, 1e30f, 1e30f};
@@ -246,51 +276,67 @@ namespace ropras::ompl_ext::simd
             // the program's arrays in locals: the stores below may alias anything (members would be reloaded)
             const FrameOp *frames = p.frames.data();
             const LinkOp *links = p.links.data();
+            const float *boundPairs = p.linkBoundPairs.data();
             const int *frameLinks = p.frameLinks.data(), *groupOfLink = p.groupOfLink.data();
             const int nFrames = static_cast<int>(p.frames.size());
+            // a frame as two 8-float vectors: a = (c0 | c1), b = (c2 | t), the same memory as four columns
+            Row8 pa = {}, pb = {};
+            const Row8 zero = {};
             for (int f = 0; f < nFrames; ++f)
             {
                 const FrameOp &op = frames[f];
-                const float *o = op.offset;
-                Row4 c[4];
+                Row8 a, b;
                 if (op.parent < 0)
                 {
-                    for (int j = 0; j < 4; ++j)
-                        c[j] = loadRow(op.offsetColumns + 4 * j);
+                    a = loadRow8(op.offsetColumns);
+                    b = loadRow8(op.offsetColumns + 8);
                 }
                 else
                 {
                     if (op.parent != f - 1)
-                        for (int j = 0; j < 4; ++j)
-                            pc[j] = loadRow(t + 16 * op.parent + 4 * j);
-                    for (int j = 0; j < 3; ++j)
-                        c[j] = pc[0] * o[j] + pc[1] * o[3 + j] + pc[2] * o[6 + j];
-                    c[3] = pc[0] * o[9] + pc[1] * o[10] + pc[2] * o[11] + pc[3];
+                    {
+                        pa = loadRow8(t + 16 * op.parent);
+                        pb = loadRow8(t + 16 * op.parent + 8);
+                    }
+                    // column k of the parent in both halves, times the offset's pairs (FrameOp::offsetPairs)
+                    const Row8 c0 = __builtin_shuffle(pa, LOW_TWICE), c1 = __builtin_shuffle(pa, HIGH_TWICE);
+                    const Row8 c2 = __builtin_shuffle(pb, LOW_TWICE);
+                    const float *k = op.offsetPairs;
+                    a = c0 * loadRow8(k) + c1 * loadRow8(k + 8) + c2 * loadRow8(k + 16);
+                    b = c0 * loadRow8(k + 24) + c1 * loadRow8(k + 32) + c2 * loadRow8(k + 40) +
+                        __builtin_shuffle(pb, zero, ZERO_LOW);
                 }
                 if (op.motion == Motion::RotateZ)
                 {
+                    // (c0 | c1) <- c (c0 | c1) + (s | -s) (c1 | c0)
                     const float cv = cs[op.variable], sv = sn[op.variable];
-                    const Row4 a = c[0], b = c[1];
-                    c[0] = a * cv + b * sv;
-                    c[1] = b * cv - a * sv;
+                    const Row8 sPair = {sv, sv, sv, sv, -sv, -sv, -sv, -sv};
+                    a = a * cv + sPair * __builtin_shuffle(a, SWAP_HALVES);
                 }
                 else if (op.motion == Motion::TranslateZ)
-                    c[3] += c[2] * qf[op.variable];
-                for (int j = 0; j < 4; ++j)
                 {
-                    storeRow(t + 16 * f + 4 * j, c[j]);
-                    pc[j] = c[j];
+                    // t += q c2: (c2 | t) + (0 | q) (c2 | c2)
+                    const float d = qf[op.variable];
+                    const Row8 dPair = {0.0f, 0.0f, 0.0f, 0.0f, d, d, d, d};
+                    b += dPair * __builtin_shuffle(b, LOW_TWICE);
                 }
+                storeRow8(t + 16 * f, a);
+                storeRow8(t + 16 * f + 8, b);
+                pa = a;
+                pb = b;
                 for (int k = op.linkBegin; k < op.linkEnd; ++k)
                 {
                     const int li = frameLinks[k];
-                    const LinkOp &link = links[li];
-                    const Row4 w = c[0] * link.bx + c[1] * link.by + c[2] * link.bz + c[3];
+                    // (c0 bx + c2 bz | c1 by + t): the bound centre is the sum of the halves
+                    const float *bp = boundPairs + 16 * li;
+                    const Row8 h = a * loadRow8(bp) + b * loadRow8(bp + 8);
+                    const Row4 w = lowHalf(h) + highHalf(h);
                     lx[li] = w[0];
                     ly[li] = w[1];
                     lz[li] = w[2];
                     const int gi = groupOfLink[li];
-                    const Row4 lo = w - link.br, hi = w + link.br;
+                    const float br = links[li].br;
+                    const Row4 lo = w - br, hi = w + br;
                     g.lo[gi] = g.lo[gi] < lo ? g.lo[gi] : lo;
                     g.hi[gi] = g.hi[gi] > hi ? g.hi[gi] : hi;
                 }

@@ -30,6 +30,11 @@ namespace ropras::ompl_ext::simd
         float offset[12];
         /// the same offset as four columns (r0j r1j r2j 0, then t 0) for the single-configuration path
         alignas(16) float offsetColumns[16];
+        /** \brief The offset for the single path's two-column products (8 floats each, two halves of 4 equal
+            values): for k = 0, 1, 2, pairs k = (o_k0 | o_k1) and pairs 3 + k = (o_k2 | t_k), so that the columns
+            (c0 | c1) of T_parent * offset are sum_k (c_k | c_k) * pairs[k], and (c2 | t) are
+            sum_k (c_k | c_k) * pairs[3 + k] + (0 | t). */
+        alignas(32) float offsetPairs[48];
         /// the offset rotation is a signed permutation (rpy in multiples of pi/2, common in URDFs): column j of
         /// T_parent * offset is sign[j] * column perm[j] of T_parent, no multiplications
         bool permutation{false};
@@ -119,6 +124,8 @@ namespace ropras::ompl_ext::simd
         std::vector<int> programIndexOfSphere;
         /// link bound radii padded to a multiple of WIDTH with 0
         std::vector<float> linkRadius;
+        /// per link 16 floats (bx x4 | by x4 | bz x4 | 1 x4): its bound centre for the single path's two-column product
+        std::vector<float> linkBoundPairs;
         int linkPadded{0};
         /// link groups (at most MAX_LINK_GROUPS, covering every link in order)
         std::vector<LinkGroup> groups;
