@@ -145,39 +145,30 @@ namespace ropras::ompl_ext::simd
 
     /// 4 floats with GCC/Clang vector extensions (SSE where available, plain code elsewhere)
     typedef float Row4 __attribute__((vector_size(16)));
+    /// 8 floats with GCC/Clang vector extensions (AVX where available): two 4-float columns side by side
+    typedef float Row8 __attribute__((vector_size(32)));
 
-    inline Row4 loadRow(const float *p) noexcept
+    /// a Row4 or Row8 from unaligned memory
+    template <class R = Row4>
+    inline R loadRow(const float *p) noexcept
     {
-        Row4 r;
+        R r;
         std::memcpy(&r, p, sizeof(r));
         return r;
     }
 
-    inline void storeRow(float *p, const Row4 &r) noexcept
+    template <class R>
+    inline void storeRow(float *p, const R &r) noexcept
     {
         std::memcpy(p, &r, sizeof(r));
     }
 
-    /// 8 floats with GCC/Clang vector extensions (AVX where available): two 4-float columns side by side
-    typedef float Row8 __attribute__((vector_size(32)));
     typedef int Index8 __attribute__((vector_size(32)));
     constexpr Index8 LOW_TWICE = {0, 1, 2, 3, 0, 1, 2, 3};
     constexpr Index8 HIGH_TWICE = {4, 5, 6, 7, 4, 5, 6, 7};
     constexpr Index8 SWAP_HALVES = {4, 5, 6, 7, 0, 1, 2, 3};
     /// with a second operand of zeros: (0 | high half)
     constexpr Index8 ZERO_LOW = {8, 9, 10, 11, 4, 5, 6, 7};
-
-    inline Row8 loadRow8(const float *p) noexcept
-    {
-        Row8 r;
-        std::memcpy(&r, p, sizeof(r));
-        return r;
-    }
-
-    inline void storeRow8(float *p, const Row8 &r) noexcept
-    {
-        std::memcpy(p, &r, sizeof(r));
-    }
 
     inline Row4 lowHalf(const Row8 &r) noexcept
     {
@@ -288,22 +279,22 @@ namespace ropras::ompl_ext::simd
                 Row8 a, b;
                 if (op.parent < 0)
                 {
-                    a = loadRow8(op.offsetColumns);
-                    b = loadRow8(op.offsetColumns + 8);
+                    a = loadRow<Row8>(op.offsetColumns);
+                    b = loadRow<Row8>(op.offsetColumns + 8);
                 }
                 else
                 {
                     if (op.parent != f - 1)
                     {
-                        pa = loadRow8(t + 16 * op.parent);
-                        pb = loadRow8(t + 16 * op.parent + 8);
+                        pa = loadRow<Row8>(t + 16 * op.parent);
+                        pb = loadRow<Row8>(t + 16 * op.parent + 8);
                     }
                     // column k of the parent in both halves, times the offset's pairs (FrameOp::offsetPairs)
                     const Row8 c0 = __builtin_shuffle(pa, LOW_TWICE), c1 = __builtin_shuffle(pa, HIGH_TWICE);
                     const Row8 c2 = __builtin_shuffle(pb, LOW_TWICE);
                     const float *k = op.offsetPairs;
-                    a = c0 * loadRow8(k) + c1 * loadRow8(k + 8) + c2 * loadRow8(k + 16);
-                    b = c0 * loadRow8(k + 24) + c1 * loadRow8(k + 32) + c2 * loadRow8(k + 40) +
+                    a = c0 * loadRow<Row8>(k) + c1 * loadRow<Row8>(k + 8) + c2 * loadRow<Row8>(k + 16);
+                    b = c0 * loadRow<Row8>(k + 24) + c1 * loadRow<Row8>(k + 32) + c2 * loadRow<Row8>(k + 40) +
                         __builtin_shuffle(pb, zero, ZERO_LOW);
                 }
                 if (op.motion == Motion::RotateZ)
@@ -320,8 +311,8 @@ namespace ropras::ompl_ext::simd
                     const Row8 dPair = {0.0f, 0.0f, 0.0f, 0.0f, d, d, d, d};
                     b += dPair * __builtin_shuffle(b, LOW_TWICE);
                 }
-                storeRow8(t + 16 * f, a);
-                storeRow8(t + 16 * f + 8, b);
+                storeRow(t + 16 * f, a);
+                storeRow(t + 16 * f + 8, b);
                 pa = a;
                 pb = b;
                 for (int k = op.linkBegin; k < op.linkEnd; ++k)
@@ -329,7 +320,7 @@ namespace ropras::ompl_ext::simd
                     const int li = frameLinks[k];
                     // (c0 bx + c2 bz | c1 by + t): the bound centre is the sum of the halves
                     const float *bp = boundPairs + 16 * li;
-                    const Row8 h = a * loadRow8(bp) + b * loadRow8(bp + 8);
+                    const Row8 h = a * loadRow<Row8>(bp) + b * loadRow<Row8>(bp + 8);
                     const Row4 w = lowHalf(h) + highHalf(h);
                     lx[li] = w[0];
                     ly[li] = w[1];
