@@ -441,11 +441,6 @@ namespace ropras::ompl_ext
             else if (frame.variable >= 0 && frame.motion == JointMotion::TranslateZ)
                 op.motion = simd::Motion::TranslateZ;
             toFloat12(frame.offset, op.offset);
-            for (int j = 0; j < 4; ++j)
-                for (int i = 0; i < 4; ++i)
-                    op.offsetColumns[4 * j + i] = i == 3 ? 0.0f
-                                                         : static_cast<float>(j < 3 ? frame.offset.linear()(i, j)
-                                                                                    : frame.offset.translation()(i));
             for (int k = 0; k < 3; ++k)
                 for (int i = 0; i < 4; ++i)
                 {
@@ -456,6 +451,8 @@ namespace ropras::ompl_ext
                 }
             // fold signed-permutation rotations and zero translation components
             op.permutation = true;
+            op.flipColumns = 0u;
+            int perm[3] = {0, 1, 2};  // column j of the offset rotation is +-e_perm[j]
             for (int j = 0; j < 3 && op.permutation; ++j)
             {
                 int nonZero = 0;
@@ -467,8 +464,8 @@ namespace ropras::ompl_ext
                     if (std::abs(v) > PERMUTATION_TOLERANCE)
                     {
                         ++nonZero;
-                        op.perm[j] = i;
-                        op.sign[j] = v > 0.0 ? 1.0f : -1.0f;
+                        perm[j] = i;
+                        op.flipColumns |= (v < 0.0 ? 1u : 0u) << j;
                         if (std::abs(std::abs(v) - 1.0) > PERMUTATION_TOLERANCE)
                             op.permutation = false;
                     }
@@ -480,17 +477,16 @@ namespace ropras::ompl_ext
             {
                 op.permId = -1;
                 for (int k = 0; k < 6; ++k)
-                    if (simd::PERMUTATIONS[k][0] == op.perm[0] && simd::PERMUTATIONS[k][1] == op.perm[1] &&
-                        simd::PERMUTATIONS[k][2] == op.perm[2])
+                    if (std::equal(perm, perm + 3, simd::PERMUTATIONS[k]))
                         op.permId = k;
                 if (op.permId < 0)  // two columns from the same source: not a permutation after all
                     op.permutation = false;
-                op.flipColumns = 0u;
-                for (int j = 0; j < 3; ++j)
-                    op.flipColumns |= (op.sign[j] < 0.0f ? 1u : 0u) << j;
             }
             if (!op.permutation)
+            {
                 op.permId = 0;
+                op.flipColumns = 0u;
+            }
             op.translationMask = 0u;
             for (int k = 0; k < 3; ++k)
                 if (frame.offset.translation()(k) != 0.0)

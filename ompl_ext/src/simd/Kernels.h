@@ -270,33 +270,31 @@ namespace ropras::ompl_ext::simd
             const float *boundPairs = p.linkBoundPairs.data();
             const int *frameLinks = p.frameLinks.data(), *groupOfLink = p.groupOfLink.data();
             const int nFrames = static_cast<int>(p.frames.size());
-            // a frame as two 8-float vectors: a = (c0 | c1), b = (c2 | t), the same memory as four columns
-            Row8 pa = {}, pb = {};
+            // a frame as two 8-float vectors: a = (c0 | c1), b = (c2 | t), the same memory as four columns; a
+            // frame without parent has the identity as parent
+            const Row8 identityA = {1, 0, 0, 0, 0, 1, 0, 0}, identityB = {0, 0, 1, 0, 0, 0, 0, 0};
+            Row8 pa = identityA, pb = identityB;
             const Row8 zero = {};
             for (int f = 0; f < nFrames; ++f)
             {
                 const FrameOp &op = frames[f];
-                Row8 a, b;
                 if (op.parent < 0)
                 {
-                    a = loadRow<Row8>(op.offsetColumns);
-                    b = loadRow<Row8>(op.offsetColumns + 8);
+                    pa = identityA;
+                    pb = identityB;
                 }
-                else
+                else if (op.parent != f - 1)
                 {
-                    if (op.parent != f - 1)
-                    {
-                        pa = loadRow<Row8>(t + 16 * op.parent);
-                        pb = loadRow<Row8>(t + 16 * op.parent + 8);
-                    }
-                    // column k of the parent in both halves, times the offset's pairs (FrameOp::offsetPairs)
-                    const Row8 c0 = __builtin_shuffle(pa, LOW_TWICE), c1 = __builtin_shuffle(pa, HIGH_TWICE);
-                    const Row8 c2 = __builtin_shuffle(pb, LOW_TWICE);
-                    const float *k = op.offsetPairs;
-                    a = c0 * loadRow<Row8>(k) + c1 * loadRow<Row8>(k + 8) + c2 * loadRow<Row8>(k + 16);
-                    b = c0 * loadRow<Row8>(k + 24) + c1 * loadRow<Row8>(k + 32) + c2 * loadRow<Row8>(k + 40) +
-                        __builtin_shuffle(pb, zero, ZERO_LOW);
+                    pa = loadRow<Row8>(t + 16 * op.parent);
+                    pb = loadRow<Row8>(t + 16 * op.parent + 8);
                 }
+                // column k of the parent in both halves, times the offset's pairs (FrameOp::offsetPairs)
+                const Row8 c0 = __builtin_shuffle(pa, LOW_TWICE), c1 = __builtin_shuffle(pa, HIGH_TWICE);
+                const Row8 c2 = __builtin_shuffle(pb, LOW_TWICE);
+                const float *k = op.offsetPairs;
+                Row8 a = c0 * loadRow<Row8>(k) + c1 * loadRow<Row8>(k + 8) + c2 * loadRow<Row8>(k + 16);
+                Row8 b = c0 * loadRow<Row8>(k + 24) + c1 * loadRow<Row8>(k + 32) + c2 * loadRow<Row8>(k + 40) +
+                         __builtin_shuffle(pb, zero, ZERO_LOW);
                 if (op.motion == Motion::RotateZ)
                 {
                     // (c0 | c1) <- c (c0 | c1) + (s | -s) (c1 | c0)

@@ -28,22 +28,18 @@ namespace ropras::ompl_ext::simd
         int variable{-1};
         Motion motion{Motion::None};
         float offset[12];
-        /// the same offset as four columns (r0j r1j r2j 0, then t 0) for the single-configuration path
-        alignas(16) float offsetColumns[16];
         /** \brief The offset for the single path's two-column products (8 floats each, two halves of 4 equal
             values): for k = 0, 1, 2, pairs k = (o_k0 | o_k1) and pairs 3 + k = (o_k2 | t_k), so that the columns
             (c0 | c1) of T_parent * offset are sum_k (c_k | c_k) * pairs[k], and (c2 | t) are
             sum_k (c_k | c_k) * pairs[3 + k] + (0 | t). */
         alignas(32) float offsetPairs[48];
         /// the offset rotation is a signed permutation (rpy in multiples of pi/2, common in URDFs): column j of
-        /// T_parent * offset is sign[j] * column perm[j] of T_parent, no multiplications
+        /// T_parent * offset is +- column PERMUTATIONS[permId][j] of T_parent, no multiplications
         bool permutation{false};
-        int perm[3]{0, 1, 2};
-        float sign[3]{1, 1, 1};
         /// offset translation components that are non-zero (bit k)
         unsigned translationMask{7};
-        /// pre-decoded permutation for the batch path: index into PERMUTATIONS (perm), and the columns j whose
-        /// sign is negative (bit j), flipped with an XOR of the sign bit (no multiplication)
+        /// pre-decoded permutation for the batch path: index into PERMUTATIONS, and the columns j whose sign is
+        /// negative (bit j), flipped with an XOR of the sign bit (no multiplication)
         int permId{0};
         unsigned flipColumns{0};
         /// the links carried by this frame: KinematicProgram::frameLinks[linkBegin, linkEnd)
