@@ -14,6 +14,7 @@
 
 #include "NodeBlocks.h"
 #include "ropras/core/Error.h"
+#include "ropras/core/Rng.h"
 #include "ropras/ompl_ext/CollisionChecker.h"
 #include "ropras/ompl_ext/HaltonSequence.h"
 #include "ropras/ompl_ext/MotionValidator.h"
@@ -132,12 +133,7 @@ namespace ropras::ompl_ext
             {
                 std::uint64_t x = seed_;
                 for (double &s : shift_)
-                {
-                    std::uint64_t z = (x += 0x9e3779b97f4a7c15ULL);
-                    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-                    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-                    s = static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-                }
+                    s = static_cast<double>(core::Rng::splitMix64(x) >> 11) * 0x1.0p-53;
             }
         }
         shiftPadded_.assign(dofPadded_, 0.0);
