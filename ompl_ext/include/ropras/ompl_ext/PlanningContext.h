@@ -13,8 +13,8 @@
 
 namespace ropras::ompl_ext
 {
-    /** \brief A RealVectorStateSpace with one dimension per planning joint, named after the joints, with
-        bounds from the joint limits (continuous joints: [-pi, pi]). */
+    /** \brief A JointStateSpace (a RealVectorStateSpace, see JointStateSpace.h) with one dimension per planning
+        joint, named after the joints, with bounds from the joint limits (continuous joints: [-pi, pi]). */
     std::shared_ptr<ompl::base::RealVectorStateSpace> createStateSpace(const RobotModel &robot);
 
     /** \brief Settings of makePlanningContext(). */
