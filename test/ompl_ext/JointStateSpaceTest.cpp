@@ -3,10 +3,12 @@
 #include "ropras/ompl_ext/JointStateSpace.h"
 
 #include <gtest/gtest.h>
+#include <ompl/base/ScopedState.h>
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <random>
 #include <vector>
 
 #include "ropras/core/Rng.h"
@@ -34,11 +36,69 @@ namespace
         return space;
     }
 
-    const double *values(const ompl::base::State *s)
+    double *values(ompl::base::State *s)
     {
         return s->as<ompl::base::RealVectorStateSpace::StateType>()->values;
     }
 }  // namespace
+
+TEST(JointStateSpace, KeepsEachStatesValuesInItsOwnBlock)
+{
+    // JointStateSpace allocates each state as one block (header + values): the values sit right behind the
+    // state, and every StateSpace operation (copy, clone, equality, interpolation, serialization, ScopedState)
+    // behaves as on OMPL's own RealVectorStateSpace with the same bounds.
+    auto space = pandaLikeSpace();
+    const unsigned dof = space->getDimension();
+    ompl::base::RealVectorStateSpace reference(dof);
+    reference.setBounds(space->getBounds());
+    reference.setup();
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<ompl::base::State *> states;
+    for (int i = 0; i < 200; ++i)
+    {
+        ompl::base::State *s = space->allocState();
+        const char *begin = reinterpret_cast<const char *>(s);
+        const char *valuesAt = reinterpret_cast<const char *>(values(s));
+        EXPECT_GE(valuesAt, begin + sizeof(ompl::base::RealVectorStateSpace::StateType));
+        EXPECT_LE(valuesAt, begin + 64) << "the values share the state's block";
+        for (unsigned k = 0; k < dof; ++k)
+            values(s)[k] = u(rng);
+        states.push_back(s);
+    }
+    ompl::base::State *r1 = reference.allocState(), *r2 = reference.allocState(), *r3 = reference.allocState();
+    ompl::base::State *mid = space->allocState();
+    std::vector<char> buffer(space->getSerializationLength());
+    for (std::size_t i = 0; i + 1 < states.size(); ++i)
+    {
+        ompl::base::State *a = states[i], *b = states[i + 1];
+        reference.copyState(r1, a);
+        reference.copyState(r2, b);
+        EXPECT_DOUBLE_EQ(space->distance(a, b), reference.distance(r1, r2));
+        space->interpolate(a, b, 0.3, mid);
+        reference.interpolate(r1, r2, 0.3, r3);
+        for (unsigned k = 0; k < dof; ++k)
+            EXPECT_DOUBLE_EQ(values(mid)[k], r3->as<ompl::base::RealVectorStateSpace::StateType>()->values[k]);
+        ompl::base::State *clone = space->cloneState(a);
+        EXPECT_TRUE(space->equalStates(clone, a));
+        EXPECT_FALSE(space->equalStates(clone, b));
+        space->serialize(buffer.data(), b);
+        space->deserialize(clone, buffer.data());
+        EXPECT_TRUE(space->equalStates(clone, b));
+        space->freeState(clone);
+    }
+    ompl::base::ScopedState<> scoped(space);
+    scoped[0] = 0.25;
+    scoped[1] = 0.75;
+    ompl::base::ScopedState<> copy = scoped;
+    EXPECT_EQ(copy[1], 0.75);
+    reference.freeState(r1);
+    reference.freeState(r2);
+    reference.freeState(r3);
+    space->freeState(mid);
+    for (ompl::base::State *s : states)
+        space->freeState(s);
+}
 
 TEST(JointStateSpace, DefaultSamplerIsJointStateSamplerUnlessAnAllocatorIsSet)
 {

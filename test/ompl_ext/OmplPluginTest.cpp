@@ -16,6 +16,7 @@
 
 #include "PointRobotUrdf.h"
 #include "ropras/core/Error.h"
+#include "ropras/ompl_ext/JointStateSpace.h"
 #include "ropras/ompl_ext/PlannerRegistry.h"
 #include "ropras/ompl_ext/PlanningContext.h"
 #include "ropras/ompl_ext/SceneYaml.h"
@@ -490,61 +491,15 @@ TEST(OmplPlugin, EveryRegisteredPlannerRunsThroughTheValidators)
     EXPECT_GE(solved, total - 4) << "unsolved: " << list;
 }
 
-TEST(OmplPlugin, StateSpaceKeepsEachStatesValuesInItsOwnBlock)
+TEST(OmplPlugin, CreateStateSpaceMakesAJointStateSpaceOfThePlanningJoints)
 {
-    // createStateSpace allocates each state as one block (header + values): the values sit right behind the
-    // state, and every StateSpace operation (copy, clone, equality, interpolation, serialization, ScopedState)
-    // behaves as on OMPL's own RealVectorStateSpace with the same bounds.
+    // the space's own behaviour is tested in JointStateSpaceTest.cpp
     auto robot = RobotModel::fromUrdfFile(writePointRobotUrdf());
     auto space = createStateSpace(*robot);
-    space->setup();
-    ompl::base::RealVectorStateSpace reference(robot->dof());
-    reference.setBounds(space->getBounds());
-    reference.setup();
-    std::mt19937 rng(4);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    std::vector<ompl::base::State *> states;
-    for (int i = 0; i < 200; ++i)
-    {
-        ompl::base::State *s = space->allocState();
-        const char *begin = reinterpret_cast<const char *>(s);
-        const char *valuesAt = reinterpret_cast<const char *>(values(s));
-        EXPECT_GE(valuesAt, begin + sizeof(ompl::base::RealVectorStateSpace::StateType));
-        EXPECT_LE(valuesAt, begin + 64) << "the values share the state's block";
-        for (unsigned k = 0; k < robot->dof(); ++k)
-            values(s)[k] = u(rng);
-        states.push_back(s);
-    }
-    ompl::base::State *r1 = reference.allocState(), *r2 = reference.allocState(), *r3 = reference.allocState();
-    ompl::base::State *mid = space->allocState();
-    std::vector<char> buffer(space->getSerializationLength());
-    for (std::size_t i = 0; i + 1 < states.size(); ++i)
-    {
-        ompl::base::State *a = states[i], *b = states[i + 1];
-        reference.copyState(r1, a);
-        reference.copyState(r2, b);
-        EXPECT_DOUBLE_EQ(space->distance(a, b), reference.distance(r1, r2));
-        space->interpolate(a, b, 0.3, mid);
-        reference.interpolate(r1, r2, 0.3, r3);
-        for (unsigned k = 0; k < robot->dof(); ++k)
-            EXPECT_DOUBLE_EQ(values(mid)[k], r3->as<ompl::base::RealVectorStateSpace::StateType>()->values[k]);
-        ompl::base::State *clone = space->cloneState(a);
-        EXPECT_TRUE(space->equalStates(clone, a));
-        EXPECT_FALSE(space->equalStates(clone, b));
-        space->serialize(buffer.data(), b);
-        space->deserialize(clone, buffer.data());
-        EXPECT_TRUE(space->equalStates(clone, b));
-        space->freeState(clone);
-    }
-    ompl::base::ScopedState<> scoped(space);
-    scoped[0] = 0.25;
-    scoped[1] = 0.75;
-    ompl::base::ScopedState<> copy = scoped;
-    EXPECT_EQ(copy[1], 0.75);
-    reference.freeState(r1);
-    reference.freeState(r2);
-    reference.freeState(r3);
-    space->freeState(mid);
-    for (ompl::base::State *s : states)
-        space->freeState(s);
+    ASSERT_NE(dynamic_cast<JointStateSpace *>(space.get()), nullptr);
+    ASSERT_EQ(space->getDimension(), 2u);
+    EXPECT_EQ(space->getDimensionName(0), "x");
+    EXPECT_EQ(space->getDimensionName(1), "y");
+    EXPECT_EQ(space->getBounds().low, std::vector<double>({0.0, 0.0}));
+    EXPECT_EQ(space->getBounds().high, std::vector<double>({1.0, 1.0}));
 }
