@@ -382,8 +382,10 @@ namespace
                             // time limit or exact solution, in one non-threaded condition: the same as
                             // plannerOr(timed, exactSoln) with one evaluation instead of three. Planners poll it
                             // once per iteration, inside the timed region, so the deadline is read from the coarse
-                            // clock (about 7 ns instead of 30 here; it lags by at most one tick, 4 ms).
-                            const std::int64_t deadline = coarseNanoseconds() + static_cast<std::int64_t>(a.time * 1e9);
+                            // clock (about 7 ns instead of 30 here; it lags by at most one tick, 4 ms). Limits
+                            // beyond 1e9 s (31 years) mean "no limit": they saturate instead of overflowing.
+                            const std::int64_t deadline =
+                                coarseNanoseconds() + static_cast<std::int64_t>(std::min(a.time, 1e9) * 1e9);
                             const ob::ProblemDefinition *pdef = ss.getProblemDefinition().get();
                             const ob::PlannerTerminationCondition ptc(
                                 [deadline, pdef]
