@@ -21,10 +21,10 @@
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
-#include "ropras/ompl_ext/FclReferenceChecker.h"
-#include "ropras/ompl_ext/PlannerRegistry.h"
-#include "ropras/ompl_ext/PlanningContext.h"
-#include "ropras/ompl_ext/SceneYaml.h"
+#include "ropras/ompl_ext/collision/FclReferenceChecker.h"
+#include "ropras/ompl_ext/ompl/PlannerRegistry.h"
+#include "ropras/ompl_ext/ompl/PlanningContext.h"
+#include "ropras/ompl_ext/scene/SceneYaml.h"
 
 namespace
 {

@@ -12,9 +12,9 @@
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
-#include "ropras/ompl_ext/CrossCheck.h"
-#include "ropras/ompl_ext/FclReferenceChecker.h"
-#include "ropras/ompl_ext/SceneYaml.h"
+#include "ropras/ompl_ext/collision/CrossCheck.h"
+#include "ropras/ompl_ext/collision/FclReferenceChecker.h"
+#include "ropras/ompl_ext/scene/SceneYaml.h"
 
 namespace
 {

@@ -11,9 +11,9 @@
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
-#include "ropras/ompl_ext/PlannerRegistry.h"
-#include "ropras/ompl_ext/PlanningContext.h"
-#include "ropras/ompl_ext/SceneYaml.h"
+#include "ropras/ompl_ext/ompl/PlannerRegistry.h"
+#include "ropras/ompl_ext/ompl/PlanningContext.h"
+#include "ropras/ompl_ext/scene/SceneYaml.h"
 
 namespace
 {

@@ -7,11 +7,11 @@
 #include <ompl/util/Console.h>
 #include <iostream>
 
-#include <ropras/ompl_ext/CollisionChecker.h>
-#include <ropras/ompl_ext/MotionValidator.h>
-#include <ropras/ompl_ext/PlanningContext.h>
-#include <ropras/ompl_ext/SceneYaml.h>
-#include <ropras/ompl_ext/StateValidityChecker.h>
+#include <ropras/ompl_ext/collision/CollisionChecker.h>
+#include <ropras/ompl_ext/ompl/MotionValidator.h>
+#include <ropras/ompl_ext/ompl/PlanningContext.h>
+#include <ropras/ompl_ext/scene/SceneYaml.h>
+#include <ropras/ompl_ext/ompl/StateValidityChecker.h>
 
 namespace ob = ompl::base;
 namespace og = ompl::geometric;

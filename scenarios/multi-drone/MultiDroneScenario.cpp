@@ -6,7 +6,7 @@
 
 #include "BuiltinScenarios.h"
 #include "ropras/core/Error.h"
-#include "ropras/ompl_ext/Environment.h"
+#include "ropras/ompl_ext/scene/Environment.h"
 #include "ropras/pomdp/OmplReferencePolicy.h"
 #include "ropras/scenarios/MultiDronePlanning.h"
 #include "ropras/scenarios/MultiDroneWorld.h"

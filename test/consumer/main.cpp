@@ -2,9 +2,9 @@
 #include <iostream>
 #include <vector>
 
-#include <ropras/ompl_ext/CollisionChecker.h>
-#include <ropras/ompl_ext/Environment.h>
-#include <ropras/ompl_ext/RobotModel.h>
+#include <ropras/ompl_ext/collision/CollisionChecker.h>
+#include <ropras/ompl_ext/scene/Environment.h>
+#include <ropras/ompl_ext/model/RobotModel.h>
 
 int main(int argc, char **argv)
 {

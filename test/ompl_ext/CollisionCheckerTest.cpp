@@ -14,10 +14,10 @@
 #include <vector>
 
 #include "ropras/core/Error.h"
-#include "ropras/ompl_ext/CollisionChecker.h"
-#include "ropras/ompl_ext/PointCloud.h"
-#include "ropras/ompl_ext/RobotModel.h"
-#include "ropras/ompl_ext/SceneYaml.h"
+#include "ropras/ompl_ext/collision/CollisionChecker.h"
+#include "ropras/ompl_ext/scene/PointCloud.h"
+#include "ropras/ompl_ext/model/RobotModel.h"
+#include "ropras/ompl_ext/scene/SceneYaml.h"
 
 using namespace ropras::ompl_ext;
 

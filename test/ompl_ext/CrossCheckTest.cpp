@@ -11,10 +11,10 @@
 #include <random>
 
 #include "ropras/core/Error.h"
-#include "ropras/ompl_ext/CollisionChecker.h"
-#include "ropras/ompl_ext/CrossCheck.h"
-#include "ropras/ompl_ext/FclReferenceChecker.h"
-#include "ropras/ompl_ext/SceneYaml.h"
+#include "ropras/ompl_ext/collision/CollisionChecker.h"
+#include "ropras/ompl_ext/collision/CrossCheck.h"
+#include "ropras/ompl_ext/collision/FclReferenceChecker.h"
+#include "ropras/ompl_ext/scene/SceneYaml.h"
 
 namespace fs = std::filesystem;
 using namespace ropras::ompl_ext;

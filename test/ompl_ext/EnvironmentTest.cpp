@@ -7,8 +7,8 @@
 #include <random>
 
 #include "ropras/core/Error.h"
-#include "ropras/ompl_ext/Environment.h"
-#include "ropras/ompl_ext/PointCloud.h"
+#include "ropras/ompl_ext/scene/Environment.h"
+#include "ropras/ompl_ext/scene/PointCloud.h"
 
 using ropras::Error;
 using ropras::ompl_ext::Environment;

@@ -1,4 +1,4 @@
-#include "ropras/ompl_ext/HaltonSequence.h"
+#include "ropras/ompl_ext/planners/HaltonSequence.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // JointStateSpace's default sampler (JointStateSampler): uniform within the bounds, reproducible from a seed,
 // independent between samplers, and overridable as any OMPL space's sampler.
-#include "ropras/ompl_ext/JointStateSpace.h"
+#include "ropras/ompl_ext/ompl/JointStateSpace.h"
 
 #include <gtest/gtest.h>
 #include <ompl/base/ScopedState.h>
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "ropras/core/Rng.h"
-#include "ropras/ompl_ext/JointStateSampler.h"
+#include "ropras/ompl_ext/ompl/JointStateSampler.h"
 
 using ropras::ompl_ext::JointStateSampler;
 using ropras::ompl_ext::JointStateSpace;

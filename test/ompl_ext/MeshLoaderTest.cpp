@@ -7,7 +7,7 @@
 #include <functional>
 
 #include "ropras/core/Error.h"
-#include "ropras/ompl_ext/MeshLoader.h"
+#include "ropras/ompl_ext/model/MeshLoader.h"
 
 namespace
 {

@@ -16,10 +16,10 @@
 
 #include "PointRobotUrdf.h"
 #include "ropras/core/Error.h"
-#include "ropras/ompl_ext/JointStateSpace.h"
-#include "ropras/ompl_ext/PlannerRegistry.h"
-#include "ropras/ompl_ext/PlanningContext.h"
-#include "ropras/ompl_ext/SceneYaml.h"
+#include "ropras/ompl_ext/ompl/JointStateSpace.h"
+#include "ropras/ompl_ext/ompl/PlannerRegistry.h"
+#include "ropras/ompl_ext/ompl/PlanningContext.h"
+#include "ropras/ompl_ext/scene/SceneYaml.h"
 
 namespace fs = std::filesystem;
 using namespace ropras::ompl_ext;

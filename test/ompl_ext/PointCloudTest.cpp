@@ -1,4 +1,4 @@
-#include "ropras/ompl_ext/PointCloud.h"
+#include "ropras/ompl_ext/scene/PointCloud.h"
 
 #include <gtest/gtest.h>
 

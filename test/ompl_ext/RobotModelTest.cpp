@@ -11,7 +11,7 @@
 #include <set>
 
 #include "ropras/core/Error.h"
-#include "ropras/ompl_ext/RobotModel.h"
+#include "ropras/ompl_ext/model/RobotModel.h"
 
 namespace
 {

@@ -1,4 +1,4 @@
-#include "ropras/ompl_ext/SceneYaml.h"
+#include "ropras/ompl_ext/scene/SceneYaml.h"
 
 #include <gtest/gtest.h>
 

@@ -7,9 +7,9 @@
 #include <limits>
 #include <random>
 
-#include "../../ompl_ext/src/simd/Avx2Vec.h"
-#include "../../ompl_ext/src/simd/ScalarVec.h"
-#include "../../ompl_ext/src/simd/SinCos.h"
+#include "../../ompl_ext/src/collision/simd/Avx2Vec.h"
+#include "../../ompl_ext/src/collision/simd/ScalarVec.h"
+#include "../../ompl_ext/src/collision/simd/SinCos.h"
 
 namespace
 {
@@ -179,7 +179,7 @@ TEST(SimdTest, Avx2BackendNotCompiled)
 
 // The world boxes the kernels cull obstacles with are conservative: no sphere that penetrates an obstacle
 // (exact double-precision signed distance) nor one the exact float kernel test reports is ever culled.
-#include "../../ompl_ext/src/simd/Kernels.h"
+#include "../../ompl_ext/src/collision/simd/Kernels.h"
 
 namespace
 {

@@ -13,10 +13,10 @@
 #include <utility>
 
 #include "ExpectError.h"
-#include "ropras/ompl_ext/CollisionChecker.h"
-#include "ropras/ompl_ext/Environment.h"
-#include "ropras/ompl_ext/RobotModel.h"
-#include "ropras/ompl_ext/SphereReach.h"
+#include "ropras/ompl_ext/collision/CollisionChecker.h"
+#include "ropras/ompl_ext/scene/Environment.h"
+#include "ropras/ompl_ext/model/RobotModel.h"
+#include "ropras/ompl_ext/model/SphereReach.h"
 
 using namespace ropras::ompl_ext;
 

@@ -9,9 +9,9 @@
 #include <random>
 
 #include "ropras/core/Error.h"
-#include "ropras/ompl_ext/MeshLoader.h"
-#include "ropras/ompl_ext/RobotModel.h"
-#include "ropras/ompl_ext/Spherizer.h"
+#include "ropras/ompl_ext/model/MeshLoader.h"
+#include "ropras/ompl_ext/model/RobotModel.h"
+#include "ropras/ompl_ext/model/Spherizer.h"
 
 namespace
 {

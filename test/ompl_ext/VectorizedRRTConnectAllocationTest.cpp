@@ -7,7 +7,7 @@
 
 #include "../AllocationCounter.h"
 #include "PointRobotUrdf.h"
-#include "ropras/ompl_ext/PlanningContext.h"
+#include "ropras/ompl_ext/ompl/PlanningContext.h"
 
 using namespace ropras::ompl_ext;
 

@@ -11,11 +11,11 @@
 #include <limits>
 #include <random>
 
-#include "../../ompl_ext/src/NodeBlocks.h"
+#include "../../ompl_ext/src/planners/NodeBlocks.h"
 #include "PointRobotUrdf.h"
 #include "ropras/core/Error.h"
-#include "ropras/ompl_ext/PlanningContext.h"
-#include "ropras/ompl_ext/VectorizedRRTConnect.h"
+#include "ropras/ompl_ext/ompl/PlanningContext.h"
+#include "ropras/ompl_ext/planners/VectorizedRRTConnect.h"
 
 namespace fs = std::filesystem;
 using namespace ropras::ompl_ext;

@@ -10,7 +10,7 @@
 
 #include "PointRobotModel.h"
 #include "ropras/core/Error.h"
-#include "ropras/ompl_ext/CollisionChecker.h"
+#include "ropras/ompl_ext/collision/CollisionChecker.h"
 #include "ropras/pomdp/ModelRegistry.h"
 #include "ropras/pomdp/OmplReferencePolicy.h"
 #include "ropras/pomdp/SolverRunner.h"

@@ -12,7 +12,7 @@
 #include <ompl/util/Console.h>
 
 #include "ropras/core/Error.h"
-#include "ropras/ompl_ext/Environment.h"
+#include "ropras/ompl_ext/scene/Environment.h"
 #include "ropras/pomdp/OmplPathPlanner.h"
 #include "ropras/scenarios/MultiDronePlanning.h"
 #include "ropras/scenarios/MultiDroneScenario.h"

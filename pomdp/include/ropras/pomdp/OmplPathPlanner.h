@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "ropras/ompl_ext/CollisionChecker.h"
-#include "ropras/ompl_ext/Environment.h"
-#include "ropras/ompl_ext/MotionValidator.h"
-#include "ropras/ompl_ext/PlanningContext.h"
-#include "ropras/ompl_ext/RobotModel.h"
+#include "ropras/ompl_ext/collision/CollisionChecker.h"
+#include "ropras/ompl_ext/scene/Environment.h"
+#include "ropras/ompl_ext/ompl/MotionValidator.h"
+#include "ropras/ompl_ext/ompl/PlanningContext.h"
+#include "ropras/ompl_ext/model/RobotModel.h"
 #include "ropras/pomdp/ParameterMap.h"
 
 namespace ropras::pomdp

@@ -1,0 +1,147 @@
+#ifndef ROPRAS_OMPL_EXT_VECTORIZED_RRT_CONNECT_H
+#define ROPRAS_OMPL_EXT_VECTORIZED_RRT_CONNECT_H
+
+#include <ompl/base/Planner.h>
+#include <ompl/base/StateSampler.h>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "ropras/ompl_ext/planners/HaltonSequence.h"
+
+namespace ropras::ompl_ext
+{
+    class CollisionChecker;
+    class Environment;
+    class MotionValidator;
+    class NodeBlocks;
+
+    /** \brief Bidirectional RRT-Connect that works on flat joint arrays and validates every extension with
+        the raked SIMD motion check (registry name "VectorizedRRTConnect").
+
+        It is an ordinary ompl::base::Planner (SimpleSetup, tools::Benchmark and PlannerRegistry treat it like
+        any OMPL planner), but when the SpaceInformation carries ropras' MotionValidator it bypasses OMPL's
+        per-state allocation and calls the CollisionChecker directly; with any other validator it falls back
+        to SpaceInformation::checkMotion. Ideas from VAMP's RRT-Connect, each a parameter so its effect can
+        be measured (`ropras bench-mbm`):
+        - low-discrepancy sampling: a Halton sequence with a random shift (Cranley-Patterson rotation,
+          seeded from OMPL's RNG) instead of uniform random samples (`halton`);
+        - tree balancing: always extend the smaller tree (`balance`);
+        - dynamic domain: each node has a radius; samples farther than it from their nearest node are
+          rejected; a node's radius is set to `dd_radius` (default 5 rad, the lowest median cost per solve over
+          the MotionBenchMaker Panda set, doc/benchmarks.md) when an extension from it first fails, then shrinks
+          on each failure and grows on each success (`dynamic_domain`, `dd_radius`, `dd_alpha`, `dd_min_radius`);
+        - connection: the other tree greedily extends toward each new node in ceil(d / `range`) equal steps (d:
+          the remaining distance; no short last step), from its nearest node first and then from each node it
+          just added (no nearest-neighbour search per step);
+        - direct connection: before growing any tree, the straight start-goal motion is checked once
+          (`direct`); a raked check of an invalid motion usually fails within its first batches.
+        Nearest neighbours: a linear scan over a float copy of the nodes, laid out in blocks of 8 (one SIMD
+        register per joint), reduced in registers, then the exact distance to the winner in double (trees stay
+        small at the median).
+        Rejected samples are the common case at the median MotionBenchMaker problem (most samples of a small
+        tree fall outside the dynamic domain once its nodes have failed an extension), so their path is kept
+        short: the Halton point is drawn 8 dimensions at a time (AVX2), shifted, scaled and converted to float in
+        4-wide steps, and a sample whose float distance is clearly beyond its nearest node's radius (beyond r^2
+        plus a bound on the float rounding) is rejected without the double distance, which decides closer calls
+        exactly as before.
+        Per-solve fixed costs are kept out of solve(): tree storage is reserved in setup() and keeps its
+        capacity across clear(), the solution path's states are allocated straight into the path (one allocation
+        per state, no copies), the sampler state is allocated once, the validator is identified once (one
+        dynamic_cast per validator, not per solve), and the termination condition (a clock read and a lock) is
+        evaluated once per 32 units of work (a motion check 8, an iteration 1). */
+    class VectorizedRRTConnect : public ompl::base::Planner
+    {
+    public:
+        explicit VectorizedRRTConnect(const ompl::base::SpaceInformationPtr &si);
+        ~VectorizedRRTConnect() override;
+
+        ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
+        void clear() override;
+        void setup() override;
+        void getPlannerData(ompl::base::PlannerData &data) const override;
+
+        void setRange(double range) { range_ = range; }
+        double getRange() const { return range_; }
+        void setHalton(bool on) { useHalton_ = on; }
+        bool getHalton() const { return useHalton_; }
+        void setBalance(bool on) { balance_ = on; }
+        bool getBalance() const { return balance_; }
+        void setDynamicDomain(bool on) { dynamicDomain_ = on; }
+        bool getDynamicDomain() const { return dynamicDomain_; }
+        void setDynamicDomainRadius(double r) { ddRadius_ = r; }
+        double getDynamicDomainRadius() const { return ddRadius_; }
+        void setDynamicDomainAlpha(double a) { ddAlpha_ = a; }
+        double getDynamicDomainAlpha() const { return ddAlpha_; }
+        void setDynamicDomainMinRadius(double r) { ddMinRadius_ = r; }
+        double getDynamicDomainMinRadius() const { return ddMinRadius_; }
+        void setDirectConnection(bool on) { direct_ = on; }
+        bool getDirectConnection() const { return direct_; }
+        void setMaxSamples(unsigned n) { maxSamples_ = n; }
+        unsigned getMaxSamples() const { return maxSamples_; }
+        /** \brief Seed of the Halton shift (parameter "seed"): 0 (default) draws the shift from OMPL's RNG at
+            the first setup(); any other value derives it from \a seed alone (SplitMix64), so two planner
+            instances with the same seed and an iteration bound (max_samples) return the same paths.
+            Takes effect at the next setup(). Uniform sampling (halton = 0) always uses OMPL's RNG. */
+        void setSeed(unsigned seed);
+        unsigned getSeed() const { return seed_; }
+
+    private:
+        struct Tree
+        {
+            std::vector<double> q;               ///< node configurations, row-major
+            std::unique_ptr<NodeBlocks> blocks;  ///< the same in float, for nearest() (private header)
+            std::vector<int> parent;             ///< -1 for a root
+            std::vector<double> radius;          ///< dynamic-domain radius per node
+            std::size_t size() const { return parent.size(); }
+        };
+
+        bool motionValid(const double *a, const double *b);
+        bool stateValid(const double *q) const;
+        /// \a qf: \a q in float when the caller has it (nullptr: converted here). \a rejected: \a q is clearly
+        /// outside the nearest node's dynamic domain (\a distSq is then not computed)
+        std::size_t nearest(const Tree &tree, const double *q, const float *qf, double &distSq, bool &rejected) const;
+        void addNode(Tree &tree, const double *q, int parent);
+        /// the next sample into \a out and, in float, into \a outF (for the nearest-neighbour scan)
+        void sample(double *out, float *outF);
+        /// extends \a tree toward \a target by at most range_ from its nearest node (or from \a fromNode when
+        /// >= 0, without the dynamic-domain test); returns the new node index or -1. \a targetF: the target in
+        /// float, or nullptr. \a connect: a connection step, the remaining distance d in ceil(d / range_) equal
+        /// steps (an extension toward a sample takes one step of range_)
+        int extend(Tree &tree, const double *target, bool &reached, int fromNode = -1, const float *targetF = nullptr,
+                   bool connect = false);
+        void buildSolution(int startNode, int goalNode, bool startTreeIsA);
+        /// reserves room for \a nodes nodes in both trees
+        void reserveTrees(std::size_t nodes);
+
+        Tree trees_[2];  ///< 0: rooted at start states, 1: rooted at goal states
+        std::size_t dof_{0};
+        std::vector<double> lower_, upper_, scratch_, shift_;
+        std::size_t dofPadded_{0};    ///< dof_ rounded up to 4 (the sample transform's step)
+        double floatSlack_[2]{0, 0};  ///< float rounding bound of a squared distance: [0] * d + [1]
+        std::vector<double> lowerPadded_, widthPadded_, shiftPadded_;
+        std::vector<float> sampleF_;  ///< the current sample in float
+        HaltonSequence halton_;
+        ompl::base::StateSamplerPtr sampler_;
+        ompl::base::State *sampleState_{nullptr};
+        const ompl::base::MotionValidator *validatorSeen_{nullptr};  ///< the validator checker_ was taken from
+        const MotionValidator *roprasValidator_{nullptr};            ///< non-null when it is ropras'
+        const CollisionChecker *checker_{nullptr};
+        const Environment *environment_{nullptr};
+        double resolution_{1.0 / 32.0};
+
+        double range_{1.0};
+        bool useHalton_{true};
+        bool balance_{true};
+        bool dynamicDomain_{true};
+        double ddRadius_{5.0};
+        double ddAlpha_{1.0e-4};
+        double ddMinRadius_{1.0};
+        bool direct_{true};
+        std::uint64_t motionChecks_{0};  ///< motion checks so far (8 units of work between two PTC evaluations)
+        unsigned maxSamples_{0};         ///< 0: unlimited (until the termination condition)
+        unsigned seed_{0};               ///< 0: Halton shift from OMPL's RNG
+    };
+}  // namespace ropras::ompl_ext
+
+#endif

@@ -1,0 +1,535 @@
+#include "ropras/ompl_ext/collision/FclReferenceChecker.h"
+
+// Only the FCL headers we use: <fcl/fcl.h> alone takes seconds to compile.
+#include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/capsule.h>
+#include <fcl/geometry/shape/cylinder.h>
+#include <fcl/geometry/shape/sphere.h>
+#include <fcl/math/bv/OBBRSS.h>
+#include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/collision_object.h>
+#include <fcl/narrowphase/distance.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <sstream>
+
+#include "ropras/core/Error.h"
+#include "ropras/ompl_ext/model/MeshLoader.h"
+
+namespace ropras::ompl_ext
+{
+    namespace
+    {
+        using GeometryPtr = std::shared_ptr<fcl::CollisionGeometryd>;
+
+        /// the FCL objects of one Environment, never modified after construction
+        struct ObstacleScene
+        {
+            std::vector<double> signature;
+            std::vector<const void *> clouds;
+            std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;
+            std::vector<std::string> labels;  ///< per object: "object 'name'" (+ primitive / point index)
+            std::unique_ptr<fcl::DynamicAABBTreeCollisionManagerd> manager;
+        };
+
+        /// everything that determines the FCL scene, in a comparable form
+        void sceneSignature(const Environment &env, std::vector<double> &numbers, std::vector<const void *> &clouds)
+        {
+            numbers.clear();
+            clouds.clear();
+            for (std::size_t id = 0; id < env.objectCount(); ++id)
+            {
+                const auto &shapes = env.objectShapes(int(id));
+                numbers.push_back(double(shapes.size()));
+                for (std::size_t k = 0; k < shapes.size(); ++k)
+                {
+                    const Shape &s = shapes[k];
+                    const Eigen::Isometry3d pose = env.shapeWorldPose(int(id), k);
+                    numbers.push_back(double(int(s.type)));
+                    numbers.push_back(s.radius);
+                    numbers.push_back(s.length);
+                    numbers.insert(numbers.end(), s.extents.data(), s.extents.data() + 3);
+                    const Eigen::Matrix<double, 3, 4> affine = pose.affine();
+                    numbers.insert(numbers.end(), affine.data(), affine.data() + 12);
+                    clouds.push_back(s.cloud.get());
+                }
+            }
+        }
+
+        void *labelTag(std::size_t index)
+        {
+            return reinterpret_cast<void *>(std::uintptr_t(index + 1));
+        }
+        std::size_t tagLabel(const fcl::CollisionObjectd *object)
+        {
+            return std::size_t(reinterpret_cast<std::uintptr_t>(object->getUserData())) - 1;
+        }
+
+        std::shared_ptr<const ObstacleScene> buildScene(const Environment &env)
+        {
+            auto scene = std::make_shared<ObstacleScene>();
+            sceneSignature(env, scene->signature, scene->clouds);
+            auto add = [&](GeometryPtr geometry, const Eigen::Isometry3d &pose, std::string label)
+            {
+                auto object = std::make_unique<fcl::CollisionObjectd>(std::move(geometry), pose);
+                object->setUserData(labelTag(scene->labels.size()));
+                scene->labels.push_back(std::move(label));
+                scene->objects.push_back(std::move(object));
+            };
+            for (std::size_t id = 0; id < env.objectCount(); ++id)
+            {
+                const auto &shapes = env.objectShapes(int(id));
+                for (std::size_t k = 0; k < shapes.size(); ++k)
+                {
+                    const Shape &s = shapes[k];
+                    const Eigen::Isometry3d pose = env.shapeWorldPose(int(id), k);
+                    std::string label = "object '" + env.objectName(int(id)) + "'";
+                    if (shapes.size() > 1)
+                        label += " primitive " + std::to_string(k);
+                    switch (s.type)
+                    {
+                        case ShapeType::Sphere:
+                            add(std::make_shared<fcl::Sphered>(s.radius), pose, label);
+                            break;
+                        case ShapeType::Box:
+                            add(std::make_shared<fcl::Boxd>(s.extents), pose, label);
+                            break;
+                        case ShapeType::Cylinder:
+                            add(std::make_shared<fcl::Cylinderd>(s.radius, s.length), pose, label);
+                            break;
+                        case ShapeType::Capsule:
+                            add(std::make_shared<fcl::Capsuled>(s.radius, s.length), pose, label);
+                            break;
+                        case ShapeType::PointCloud:
+                        {
+                            if (!s.cloud)
+                                break;
+                            auto sphere = std::make_shared<fcl::Sphered>(double(s.cloud->pointRadius()));
+                            const auto &points = s.cloud->points();
+                            for (std::size_t i = 0; i < points.size(); ++i)
+                            {
+                                Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
+                                at.translation() = pose * points[i].cast<double>();
+                                add(sphere, at, label + " point " + std::to_string(i));
+                            }
+                            break;
+                        }
+                    }
+                }
+            }
+            scene->manager = std::make_unique<fcl::DynamicAABBTreeCollisionManagerd>();
+            std::vector<fcl::CollisionObjectd *> raw;
+            raw.reserve(scene->objects.size());
+            for (auto &object : scene->objects)
+                raw.push_back(object.get());
+            if (!raw.empty())
+                scene->manager->registerObjects(raw);
+            scene->manager->setup();
+            return scene;
+        }
+
+        /// Caches the scene of the last Environment seen.
+        class SceneCache
+        {
+        public:
+            const ObstacleScene &get(const Environment &env)
+            {
+                sceneSignature(env, numbers_, clouds_);
+                if (!scene_ || scene_->signature != numbers_ || scene_->clouds != clouds_)
+                    scene_ = buildScene(env);
+                return *scene_;
+            }
+
+        private:
+            std::vector<double> numbers_;
+            std::vector<const void *> clouds_;
+            std::shared_ptr<const ObstacleScene> scene_;
+        };
+
+        /// signed distance of one pair: minus the deepest penetration FCL reports, else FCL's distance
+        double signedPairDistance(const fcl::CollisionObjectd *a, const fcl::CollisionObjectd *b)
+        {
+            fcl::CollisionRequestd request(1000, true);
+            fcl::CollisionResultd result;
+            if (fcl::collide(a, b, request, result) > 0)
+            {
+                double depth = 0.0;
+                for (std::size_t i = 0; i < result.numContacts(); ++i)
+                    depth = std::max(depth, result.getContact(i).penetration_depth);
+                return -depth;
+            }
+            fcl::DistanceRequestd distanceRequest;
+            fcl::DistanceResultd distanceResult;
+            fcl::distance(a, b, distanceRequest, distanceResult);
+            return distanceResult.min_distance;
+        }
+
+        struct CollideData
+        {
+            fcl::CollisionRequestd request;
+            bool hit{false};
+            const fcl::CollisionObjectd *obstacle{nullptr};
+        };
+
+        bool collideCallback(fcl::CollisionObjectd *o1, fcl::CollisionObjectd *o2, void *data)
+        {
+            auto *d = static_cast<CollideData *>(data);
+            if (d->hit)
+                return true;
+            fcl::CollisionResultd result;
+            if (fcl::collide(o1, o2, d->request, result) > 0)
+            {
+                d->hit = true;
+                d->obstacle = o1->getUserData() != nullptr ? o1 : o2;
+            }
+            return d->hit;
+        }
+
+        /** \brief The robot as FCL objects grouped by collision link. Elements are posed by the caller,
+            then checked against a scene and against themselves over the self-collision pairs. */
+        class Body
+        {
+        public:
+            struct Element
+            {
+                std::unique_ptr<fcl::CollisionObjectd> object;
+                int group{-1};
+                std::string label;
+            };
+
+            void addElement(GeometryPtr geometry, int group, std::string label)
+            {
+                if (group < 0)  // not part of any self pair
+                    group = int(std::max(groups_.size(), reservedGroups_));
+                Element element;
+                element.object = std::make_unique<fcl::CollisionObjectd>(std::move(geometry));
+                element.group = group;
+                element.label = std::move(label);
+                if (group >= int(groups_.size()))
+                    groups_.resize(std::size_t(group) + 1);
+                groups_[std::size_t(group)].push_back(int(elements_.size()));
+                elements_.push_back(std::move(element));
+            }
+            /// groups 0..count-1 are the collision links (the self pairs index them)
+            void setGroupCount(std::size_t count)
+            {
+                reservedGroups_ = std::max(reservedGroups_, count);
+                if (count > groups_.size())
+                    groups_.resize(count);
+            }
+            void setSelfPairs(std::vector<std::pair<int, int>> pairs) { selfPairs_ = std::move(pairs); }
+            std::size_t size() const { return elements_.size(); }
+
+            void pose(std::size_t element, const Eigen::Isometry3d &transform)
+            {
+                fcl::CollisionObjectd &object = *elements_[element].object;
+                object.setTransform(transform);
+                object.computeAABB();
+            }
+
+            /// first contact found; "" when none
+            std::string firstCollision(const ObstacleScene &scene) const
+            {
+                if (!scene.objects.empty())
+                {
+                    for (const Element &element : elements_)
+                    {
+                        CollideData data;
+                        scene.manager->collide(element.object.get(), &data, collideCallback);
+                        if (data.hit)
+                            return element.label + " touches " + scene.labels[tagLabel(data.obstacle)];
+                    }
+                }
+                std::vector<fcl::AABBd> boxes = groupBoxes();
+                for (const auto &[a, b] : selfPairs_)
+                {
+                    if (!boxes[std::size_t(a)].overlap(boxes[std::size_t(b)]))
+                        continue;
+                    for (int i : groups_[std::size_t(a)])
+                    {
+                        for (int j : groups_[std::size_t(b)])
+                        {
+                            const auto *oi = elements_[std::size_t(i)].object.get();
+                            const auto *oj = elements_[std::size_t(j)].object.get();
+                            if (!oi->getAABB().overlap(oj->getAABB()))
+                                continue;
+                            fcl::CollisionRequestd request;
+                            fcl::CollisionResultd result;
+                            if (fcl::collide(oi, oj, request, result) > 0)
+                                return "self-collision: " + elements_[std::size_t(i)].label + " touches " +
+                                       elements_[std::size_t(j)].label;
+                        }
+                    }
+                }
+                return "";
+            }
+
+            double signedDistance(const ObstacleScene &scene) const
+            {
+                double best = std::numeric_limits<double>::infinity();
+                // A pair whose bounding boxes are disjoint is at least as far apart as the boxes are.
+                auto visit = [&best](const fcl::CollisionObjectd *a, const fcl::CollisionObjectd *b)
+                {
+                    const double lower = a->getAABB().distance(b->getAABB());
+                    if (lower > 0.0 && lower >= best)
+                        return;
+                    best = std::min(best, signedPairDistance(a, b));
+                };
+                for (const Element &element : elements_)
+                    for (const auto &obstacle : scene.objects)
+                        visit(element.object.get(), obstacle.get());
+                for (const auto &[a, b] : selfPairs_)
+                    for (int i : groups_[std::size_t(a)])
+                        for (int j : groups_[std::size_t(b)])
+                            visit(elements_[std::size_t(i)].object.get(), elements_[std::size_t(j)].object.get());
+                return best;
+            }
+
+        private:
+            std::vector<fcl::AABBd> groupBoxes() const
+            {
+                std::vector<fcl::AABBd> boxes(groups_.size());
+                for (std::size_t g = 0; g < groups_.size(); ++g)
+                {
+                    bool first = true;
+                    for (int e : groups_[g])
+                    {
+                        const fcl::AABBd &box = elements_[std::size_t(e)].object->getAABB();
+                        if (first)
+                            boxes[g] = box;
+                        else
+                            boxes[g] += box;
+                        first = false;
+                    }
+                }
+                return boxes;
+            }
+
+            std::vector<Element> elements_;
+            std::vector<std::vector<int>> groups_;  ///< element indices per collision link
+            std::vector<std::pair<int, int>> selfPairs_;
+            std::size_t reservedGroups_{0};
+        };
+
+        void requireFinite(const RobotModel &robot, const double *q, const char *who)
+        {
+            for (std::size_t i = 0; i < robot.dof(); ++i)
+            {
+                if (!std::isfinite(q[i]))
+                {
+                    std::ostringstream msg;
+                    msg << who << ": joint '" << robot.joints()[i].name << "' of robot '" << robot.name()
+                        << "' is not finite (" << q[i] << ")";
+                    throw Error(msg.str());
+                }
+            }
+        }
+        /** \brief Poses the robot body of \a impl (FclSphereChecker::Impl or FclMeshChecker::Impl) at \a q in the
+            cached obstacle scene of \a env and returns \a query(body, scene), under the impl's mutex. */
+        template <class Impl, class Query>
+        auto posedQuery(const RobotModel &robot, Impl &impl, const Environment &env, const double *q,
+                        const Query &query)
+        {
+            std::lock_guard<std::mutex> lock(impl.mutex);
+            const ObstacleScene &scene = impl.cache.get(env);
+            impl.pose(robot, q);
+            return query(impl.body, scene);
+        }
+    }  // namespace
+
+    // ---------------------------------------------------------------------------------------------------------
+    // FclSphereChecker
+
+    struct FclSphereChecker::Impl
+    {
+        std::mutex mutex;
+        Body body;
+        SceneCache cache;
+
+        void pose(const RobotModel &robot, const double *q)
+        {
+            const std::vector<Eigen::Vector3d> centers = robot.sphereCentersReference(q);
+            for (std::size_t i = 0; i < centers.size(); ++i)
+            {
+                Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
+                at.translation() = centers[i];
+                body.pose(i, at);
+            }
+        }
+    };
+
+    FclSphereChecker::FclSphereChecker(std::shared_ptr<const RobotModel> robot)
+        : robot_(std::move(robot)), impl_(std::make_unique<Impl>())
+    {
+        if (!robot_)
+            throw Error("FclSphereChecker: null robot model");
+        const auto &spheres = robot_->spheres();
+        const auto &links = robot_->collisionLinks();
+        impl_->body.setGroupCount(links.size());
+        for (std::size_t i = 0; i < spheres.size(); ++i)
+        {
+            const CollisionSphere &s = spheres[i];
+            const std::string linkName = s.collisionLink >= 0 && s.collisionLink < int(links.size())
+                                             ? links[std::size_t(s.collisionLink)].name
+                                             : "?";
+            impl_->body.addElement(std::make_shared<fcl::Sphered>(s.radius), s.collisionLink,
+                                   "link '" + linkName + "' sphere " + std::to_string(i));
+        }
+        impl_->body.setSelfPairs(robot_->selfCollisionPairs());
+    }
+
+    FclSphereChecker::~FclSphereChecker() = default;
+
+    bool FclSphereChecker::isValid(const Environment &env, const double *q) const
+    {
+        return robot_->withinBounds(q) && posedQuery(*robot_, *impl_, env, q,
+                                                     [](const auto &body, const ObstacleScene &scene)
+                                                     { return body.firstCollision(scene).empty(); });
+    }
+
+    double FclSphereChecker::distance(const Environment &env, const double *q) const
+    {
+        requireFinite(*robot_, q, "FclSphereChecker::distance");
+        return posedQuery(*robot_, *impl_, env, q,
+                          [](const auto &body, const ObstacleScene &scene) { return body.signedDistance(scene); });
+    }
+
+    std::string FclSphereChecker::describeCollision(const Environment &env, const double *q) const
+    {
+        requireFinite(*robot_, q, "FclSphereChecker::describeCollision");
+        return posedQuery(*robot_, *impl_, env, q,
+                          [](const auto &body, const ObstacleScene &scene) { return body.firstCollision(scene); });
+    }
+
+    // ---------------------------------------------------------------------------------------------------------
+    // FclMeshChecker
+
+    struct FclMeshChecker::Impl
+    {
+        std::mutex mutex;
+        Body body;
+        SceneCache cache;
+        std::vector<int> elementLink;                  ///< links() index per element
+        std::vector<Eigen::Isometry3d> elementOrigin;  ///< in the link frame
+        std::size_t triangles{0};
+
+        void pose(const RobotModel &robot, const double *q)
+        {
+            const std::vector<Eigen::Isometry3d> transforms = robot.linkTransformsReference(q);
+            for (std::size_t e = 0; e < elementLink.size(); ++e)
+                body.pose(e, transforms[std::size_t(elementLink[e])] * elementOrigin[e]);
+        }
+    };
+
+    FclMeshChecker::FclMeshChecker(std::shared_ptr<const RobotModel> robot)
+        : robot_(std::move(robot)), impl_(std::make_unique<Impl>())
+    {
+        if (!robot_)
+            throw Error("FclMeshChecker: null robot model");
+        const auto &links = robot_->links();
+        const auto &collisionLinks = robot_->collisionLinks();
+        // links() index -> collisionLinks() index (the self pairs are over collision links)
+        std::vector<int> groupOfLink(links.size(), -1);
+        for (std::size_t c = 0; c < collisionLinks.size(); ++c)
+            groupOfLink[std::size_t(collisionLinks[c].link)] = int(c);
+        impl_->body.setGroupCount(collisionLinks.size());
+
+        // meshes used several times (e.g. gripper fingers) are loaded once
+        std::map<std::pair<std::string, std::array<double, 3>>, GeometryPtr> meshes;
+        const auto &geometries = robot_->collisionGeometries();
+        for (std::size_t g = 0; g < geometries.size(); ++g)
+        {
+            const CollisionGeometry &geometry = geometries[g];
+            GeometryPtr shape;
+            std::string kind;
+            switch (geometry.type)
+            {
+                case CollisionGeometry::Type::Sphere:
+                    shape = std::make_shared<fcl::Sphered>(geometry.radius);
+                    kind = "sphere";
+                    break;
+                case CollisionGeometry::Type::Box:
+                    shape = std::make_shared<fcl::Boxd>(geometry.extents);
+                    kind = "box";
+                    break;
+                case CollisionGeometry::Type::Cylinder:
+                    shape = std::make_shared<fcl::Cylinderd>(geometry.radius, geometry.length);
+                    kind = "cylinder";
+                    break;
+                case CollisionGeometry::Type::Mesh:
+                {
+                    const auto key = std::make_pair(
+                        geometry.meshPath,
+                        std::array<double, 3>{geometry.scale.x(), geometry.scale.y(), geometry.scale.z()});
+                    auto found = meshes.find(key);
+                    if (found == meshes.end())
+                    {
+                        const TriangleMesh mesh = loadMesh(geometry.meshPath, geometry.scale);
+                        std::vector<fcl::Triangle> triangles;
+                        triangles.reserve(mesh.triangles.size());
+                        for (const auto &t : mesh.triangles)
+                            triangles.emplace_back(std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2]));
+                        auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
+                        if (model->beginModel(int(triangles.size()), int(mesh.vertices.size())) != fcl::BVH_OK ||
+                            model->addSubModel(mesh.vertices, triangles) != fcl::BVH_OK ||
+                            model->endModel() != fcl::BVH_OK)
+                            throw Error("FclMeshChecker: FCL could not build a BVH for mesh '" + geometry.meshPath +
+                                        "' of robot '" + robot_->source() + "'");
+                        found = meshes.emplace(key, std::move(model)).first;
+                    }
+                    impl_->triangles += static_cast<const fcl::BVHModel<fcl::OBBRSSd> &>(*found->second).num_tris;
+                    shape = found->second;
+                    kind = "mesh '" + geometry.meshPath + "'";
+                    break;
+                }
+            }
+            // a geometry on a link without spheres (group -1) is checked against obstacles only
+            impl_->body.addElement(shape, groupOfLink[std::size_t(geometry.link)],
+                                   "link '" + links[std::size_t(geometry.link)].name + "' " + kind);
+            impl_->elementLink.push_back(geometry.link);
+            impl_->elementOrigin.push_back(geometry.origin);
+        }
+        impl_->body.setSelfPairs(robot_->selfCollisionPairs());
+    }
+
+    FclMeshChecker::~FclMeshChecker() = default;
+
+    std::size_t FclMeshChecker::geometryCount() const
+    {
+        return impl_->body.size();
+    }
+
+    std::size_t FclMeshChecker::triangleCount() const
+    {
+        return impl_->triangles;
+    }
+
+    bool FclMeshChecker::isValid(const Environment &env, const double *q) const
+    {
+        return robot_->withinBounds(q) && posedQuery(*robot_, *impl_, env, q,
+                                                     [](const auto &body, const ObstacleScene &scene)
+                                                     { return body.firstCollision(scene).empty(); });
+    }
+
+    double FclMeshChecker::distance(const Environment &env, const double *q) const
+    {
+        requireFinite(*robot_, q, "FclMeshChecker::distance");
+        return posedQuery(*robot_, *impl_, env, q,
+                          [](const auto &body, const ObstacleScene &scene) { return body.signedDistance(scene); });
+    }
+
+    std::string FclMeshChecker::describeCollision(const Environment &env, const double *q) const
+    {
+        requireFinite(*robot_, q, "FclMeshChecker::describeCollision");
+        return posedQuery(*robot_, *impl_, env, q,
+                          [](const auto &body, const ObstacleScene &scene) { return body.firstCollision(scene); });
+    }
+}  // namespace ropras::ompl_ext

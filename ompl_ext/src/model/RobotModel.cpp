@@ -1,0 +1,1000 @@
+// GCC 12 reports a false -Wmaybe-uninitialized inside Eigen's AVX-512 4x4 products (-march=native builds).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+
+#include "ropras/ompl_ext/model/RobotModel.h"
+
+#include <tinyxml2.h>
+#include <urdf_model/model.h>
+#include <urdf_parser/urdf_parser.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <locale>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "model/EnclosingSphere.h"
+#include "model/SrdfReader.h"
+#include "ropras/core/Error.h"
+#include "ropras/ompl_ext/model/MeshLoader.h"
+
+namespace ropras::ompl_ext
+{
+    namespace
+    {
+        constexpr double PI = 3.14159265358979323846;
+
+        std::string readTextFile(const std::string &path, const char *what)
+        {
+            std::error_code ec;
+            if (!std::filesystem::is_regular_file(path, ec))
+            {
+                throw Error(std::string(what) + " '" + path + "': file not found");
+            }
+            std::ifstream in(path, std::ios::binary);
+            if (!in)
+            {
+                throw Error(std::string(what) + " '" + path + "': cannot open the file");
+            }
+            std::ostringstream ss;
+            ss << in.rdbuf();
+            return ss.str();
+        }
+
+        Eigen::Isometry3d toIsometry(const urdf::Pose &pose)
+        {
+            Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+            t.translation() = Eigen::Vector3d(pose.position.x, pose.position.y, pose.position.z);
+            t.linear() = Eigen::Quaterniond(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z)
+                             .normalized()
+                             .toRotationMatrix();
+            return t;
+        }
+
+        std::string fmt(double v)
+        {
+            std::ostringstream ss;
+            ss.precision(10);
+            ss << v;
+            return ss.str();
+        }
+
+        std::string joinNames(const std::vector<std::string> &names)
+        {
+            std::string out;
+            for (const std::string &n : names)
+            {
+                out += (out.empty() ? "" : ", ") + n;
+            }
+            return out.empty() ? std::string("(none)") : out;
+        }
+
+        /// the motion of a URDF joint at value v, in the joint frame
+        Eigen::Isometry3d jointMotion(JointType type, const Eigen::Vector3d &axis, double v)
+        {
+            Eigen::Isometry3d m = Eigen::Isometry3d::Identity();
+            if (type == JointType::Revolute || type == JointType::Continuous)
+            {
+                m.linear() = Eigen::AngleAxisd(v, axis).toRotationMatrix();
+            }
+            else if (type == JointType::Prismatic)
+            {
+                m.translation() = axis * v;
+            }
+            return m;
+        }
+
+        bool finitePose(const Eigen::Isometry3d &t)
+        {
+            return t.matrix().allFinite();
+        }
+    }  // namespace
+
+    /** \brief Builds a RobotModel from URDF (+ SRDF) text; the one place allowed to fill its members. */
+    class RobotModelBuilder
+    {
+    public:
+        RobotModelBuilder(const std::string &baseDir, const std::string &urdfName, const std::string &srdfName,
+                          const RobotModel::Options &options)
+            : model_(new RobotModel()), urdfName_(urdfName), srdfName_(srdfName), options_(options)
+        {
+            model_->source_ = urdfName;
+            model_->baseDir_ = baseDir;
+        }
+
+        std::shared_ptr<const RobotModel> build(const std::string &urdfXml, const std::string &srdfXml)
+        {
+            checkBasePose();
+            readDocumentOrder(urdfXml);
+            urdf::ModelInterfaceSharedPtr urdf = urdf::parseURDF(urdfXml);
+            if (!urdf || !urdf->getRoot())
+            {
+                throw Error("URDF '" + urdfName_ +
+                            "': urdfdom cannot build a model from it (missing or inconsistent <link>/<joint> "
+                            "elements, bad numbers or several root links; urdfdom's diagnostics are on stderr)");
+            }
+            model_->name_ = urdf->getName();
+            buildLinksAndJoints(*urdf);
+            choosePlanningJoints(*urdf);
+            compileFrames();
+            buildCollisionGeometry(*urdf);
+            buildSelfPairs(srdfXml);
+            findAlwaysAndDefaultPairs();
+            return model_;
+        }
+
+    private:
+        [[noreturn]] void fail(const std::string &what) const { throw Error("URDF '" + urdfName_ + "': " + what); }
+
+        void checkBasePose() const
+        {
+            const Eigen::Isometry3d &t = options_.basePose;
+            const Eigen::Matrix3d r = t.linear();
+            if (!finitePose(t) || (r.transpose() * r - Eigen::Matrix3d::Identity()).norm() > 1e-6 ||
+                r.determinant() < 0.0)
+            {
+                fail("Options::basePose must be a finite rigid transform (orthonormal rotation)");
+            }
+            model_->basePose_ = t;
+        }
+
+        // urdfdom keeps joints in a name-sorted map: the URDF document order comes from tinyxml2. Unsupported
+        // joint types are reported here, with the joint's name.
+        void readDocumentOrder(const std::string &urdfXml)
+        {
+            tinyxml2::XMLDocument doc;
+            if (doc.Parse(urdfXml.c_str(), urdfXml.size()) != tinyxml2::XML_SUCCESS)
+            {
+                fail(std::string("malformed XML: ") + (doc.ErrorStr() ? doc.ErrorStr() : "?"));
+            }
+            const tinyxml2::XMLElement *robot = doc.RootElement();
+            if (robot == nullptr || std::string(robot->Name()) != "robot")
+            {
+                fail("the root element must be <robot>");
+            }
+            for (const tinyxml2::XMLElement *j = robot->FirstChildElement("joint"); j != nullptr;
+                 j = j->NextSiblingElement("joint"))
+            {
+                const char *name = j->Attribute("name");
+                const char *type = j->Attribute("type");
+                if (name == nullptr)
+                {
+                    fail("a <joint> on line " + std::to_string(j->GetLineNum()) + " has no name");
+                }
+                const std::string t = type ? type : "";
+                if (t == "floating" || t == "planar")
+                {
+                    fail("joint '" + std::string(name) + "' has type '" + t +
+                         "'; only fixed, revolute, continuous and prismatic joints are supported");
+                }
+                if (t != "fixed" && t != "revolute" && t != "continuous" && t != "prismatic")
+                {
+                    fail("joint '" + std::string(name) + "' has unknown type '" + t + "'");
+                }
+                jointOrder_.emplace_back(name);
+            }
+            for (const tinyxml2::XMLElement *l = robot->FirstChildElement("link"); l != nullptr;
+                 l = l->NextSiblingElement("link"))
+            {
+                const char *name = l->Attribute("name");
+                if (name == nullptr)
+                {
+                    fail("a <link> on line " + std::to_string(l->GetLineNum()) + " has no name");
+                }
+                int element = 0;
+                for (const tinyxml2::XMLElement *c = l->FirstChildElement("collision"); c != nullptr;
+                     c = c->NextSiblingElement("collision"))
+                {
+                    ++element;
+                    checkCollisionNumbers(name, element, c);
+                }
+                collisionCount_[name] = element;
+            }
+        }
+
+        /// urdfdom drops a <collision> whose numbers do not parse (and only logs it): check them here
+        void checkCollisionNumbers(const std::string &link, int element, const tinyxml2::XMLElement *collision) const
+        {
+            const tinyxml2::XMLElement *geometry = collision->FirstChildElement("geometry");
+            const tinyxml2::XMLElement *shape = geometry ? geometry->FirstChildElement() : nullptr;
+            if (shape == nullptr)
+            {
+                fail("link '" + link + "' <collision> #" + std::to_string(element) + " has no <geometry> shape");
+            }
+            const std::string type = shape->Name();
+            auto check = [&](const char *attribute, int count)
+            {
+                const char *text = shape->Attribute(attribute);
+                const std::string where =
+                    "link '" + link + "' <collision> #" + std::to_string(element) + ": " + type + " " + attribute;
+                if (text == nullptr)
+                {
+                    fail(where + " is missing");
+                }
+                std::istringstream in(text);
+                in.imbue(std::locale::classic());
+                for (int i = 0; i < count; ++i)
+                {
+                    std::string token;
+                    in >> token;
+                    char *end = nullptr;
+                    const double v = std::strtod(token.c_str(), &end);
+                    if (token.empty() || end == nullptr || *end != '\0' || !std::isfinite(v) ||
+                        (type != "mesh" && v <= 0.0) || (type == "mesh" && v == 0.0))
+                    {
+                        fail(where + " '" + text + "' must hold " + std::to_string(count) +
+                             (type == "mesh" ? " finite non-zero" : " positive finite") + " number(s)");
+                    }
+                }
+            };
+            if (type == "sphere")
+            {
+                check("radius", 1);
+            }
+            else if (type == "cylinder")
+            {
+                check("radius", 1);
+                check("length", 1);
+            }
+            else if (type == "box")
+            {
+                check("size", 3);
+            }
+            else if (type == "mesh")
+            {
+                if (shape->Attribute("scale") != nullptr)
+                {
+                    check("scale", 3);
+                }
+            }
+            else
+            {
+                fail("link '" + link + "' <collision> #" + std::to_string(element) + ": unsupported geometry <" + type +
+                     ">");
+            }
+        }
+
+        void buildLinksAndJoints(const urdf::ModelInterface &urdf)
+        {
+            // joints in document order
+            std::map<std::string, int> jointIndex;
+            for (const std::string &name : jointOrder_)
+            {
+                if (jointIndex.count(name) != 0)
+                {
+                    fail("joint '" + name + "' is defined twice");
+                }
+                const int idx = static_cast<int>(jointIndex.size());
+                jointIndex[name] = idx;
+            }
+            if (jointIndex.size() != urdf.joints_.size())
+            {
+                fail("urdfdom and the XML disagree on the number of joints");
+            }
+
+            // links in depth-first topological order from the root, children in joint document order
+            std::map<std::string, std::vector<std::string>> childJoints;  // parent link -> joints
+            for (const std::string &name : jointOrder_)
+            {
+                const auto it = urdf.joints_.find(name);
+                if (it == urdf.joints_.end())
+                {
+                    fail("joint '" + name + "' was not accepted by urdfdom");
+                }
+                childJoints[it->second->parent_link_name].push_back(name);
+            }
+            std::map<std::string, int> linkIndex;
+            std::vector<std::string> stack{urdf.getRoot()->name};
+            while (!stack.empty())
+            {
+                const std::string linkName = stack.back();
+                stack.pop_back();
+                if (linkIndex.count(linkName) != 0)
+                {
+                    fail("link '" + linkName + "' is reached twice (the links do not form a tree)");
+                }
+                Link link;
+                link.name = linkName;
+                linkIndex[linkName] = static_cast<int>(model_->links_.size());
+                model_->links_.push_back(link);
+                const auto children = childJoints.find(linkName);
+                if (children != childJoints.end())
+                {
+                    for (auto j = children->second.rbegin(); j != children->second.rend(); ++j)
+                    {
+                        stack.push_back(urdf.joints_.at(*j)->child_link_name);
+                    }
+                }
+            }
+            if (model_->links_.size() != urdf.links_.size())
+            {
+                fail("some links are not connected to the root link '" + urdf.getRoot()->name + "'");
+            }
+
+            model_->urdfJoints_.resize(jointOrder_.size());
+            for (std::size_t i = 0; i < jointOrder_.size(); ++i)
+            {
+                const urdf::Joint &uj = *urdf.joints_.at(jointOrder_[i]);
+                UrdfJoint &j = model_->urdfJoints_[i];
+                j.name = uj.name;
+                switch (uj.type)
+                {
+                    case urdf::Joint::FIXED:
+                        j.type = JointType::Fixed;
+                        break;
+                    case urdf::Joint::REVOLUTE:
+                        j.type = JointType::Revolute;
+                        break;
+                    case urdf::Joint::CONTINUOUS:
+                        j.type = JointType::Continuous;
+                        break;
+                    case urdf::Joint::PRISMATIC:
+                        j.type = JointType::Prismatic;
+                        break;
+                    default:
+                        fail("joint '" + uj.name + "' has an unsupported type");
+                }
+                j.parentLink = linkIndex.at(uj.parent_link_name);
+                j.childLink = linkIndex.at(uj.child_link_name);
+                j.origin = toIsometry(uj.parent_to_joint_origin_transform);
+                if (!finitePose(j.origin))
+                {
+                    fail("joint '" + uj.name + "' has a non-finite <origin>");
+                }
+                if (j.type != JointType::Fixed)
+                {
+                    const Eigen::Vector3d axis(uj.axis.x, uj.axis.y, uj.axis.z);
+                    if (!axis.allFinite() || axis.norm() < 1e-9)
+                    {
+                        fail("joint '" + uj.name + "' has a zero or non-finite <axis>");
+                    }
+                    j.axis = axis.normalized();
+                }
+                model_->links_[j.childLink].parentJoint = static_cast<int>(i);
+            }
+        }
+
+        void choosePlanningJoints(const urdf::ModelInterface &urdf)
+        {
+            auto &joints = model_->urdfJoints_;
+            std::vector<std::string> candidates;  // movable, non-mimic joints in document order
+            for (const UrdfJoint &j : joints)
+            {
+                if (j.type != JointType::Fixed && !urdf.joints_.at(j.name)->mimic)
+                {
+                    candidates.push_back(j.name);
+                }
+            }
+            auto findJoint = [&](const std::string &name) -> int
+            {
+                for (std::size_t i = 0; i < joints.size(); ++i)
+                {
+                    if (joints[i].name == name)
+                    {
+                        return static_cast<int>(i);
+                    }
+                }
+                return -1;
+            };
+
+            // joint limits (planning joints and held joints alike)
+            std::vector<double> lower(joints.size(), 0.0), upper(joints.size(), 0.0);
+            for (std::size_t i = 0; i < joints.size(); ++i)
+            {
+                const urdf::Joint &uj = *urdf.joints_.at(joints[i].name);
+                if (joints[i].type == JointType::Continuous)
+                {
+                    lower[i] = -PI;
+                    upper[i] = PI;
+                }
+                else if (joints[i].type != JointType::Fixed)
+                {
+                    if (!uj.limits)
+                    {
+                        fail("joint '" + uj.name + "' has no <limit>");
+                    }
+                    lower[i] = uj.limits->lower;
+                    upper[i] = uj.limits->upper;
+                    if (!std::isfinite(lower[i]) || !std::isfinite(upper[i]) || lower[i] > upper[i])
+                    {
+                        fail("joint '" + uj.name + "' has invalid limits [" + fmt(lower[i]) + ", " + fmt(upper[i]) +
+                             "]");
+                    }
+                }
+            }
+
+            std::vector<std::string> chosen = options_.planningJoints.empty() ? candidates : options_.planningJoints;
+            std::set<std::string> seen;
+            for (const std::string &name : chosen)
+            {
+                const int idx = findJoint(name);
+                if (idx < 0 || std::find(candidates.begin(), candidates.end(), name) == candidates.end())
+                {
+                    std::string why = idx < 0                                ? "is not a joint of the URDF"
+                                      : joints[idx].type == JointType::Fixed ? "is a fixed joint"
+                                                                             : "is a mimic joint";
+                    fail("planning joint '" + name + "' " + why + "; valid planning joints: " + joinNames(candidates));
+                }
+                if (!seen.insert(name).second)
+                {
+                    fail("planning joint '" + name + "' is listed twice");
+                }
+                PlanningJoint pj;
+                pj.name = name;
+                pj.type = joints[idx].type;
+                pj.lower = lower[idx];
+                pj.upper = upper[idx];
+                pj.urdfJoint = idx;
+                joints[idx].variable = static_cast<int>(model_->joints_.size());
+                model_->joints_.push_back(pj);
+            }
+
+            // held joints: default 0 clamped into the limits, or the value given
+            for (std::size_t i = 0; i < joints.size(); ++i)
+            {
+                if (joints[i].type != JointType::Fixed && joints[i].variable < 0)
+                {
+                    joints[i].heldValue = std::clamp(0.0, lower[i], upper[i]);
+                }
+            }
+            for (const auto &[name, value] : options_.heldJointValues)
+            {
+                const int idx = findJoint(name);
+                if (idx < 0)
+                {
+                    std::vector<std::string> movable;
+                    for (const UrdfJoint &j : joints)
+                    {
+                        if (j.type != JointType::Fixed)
+                        {
+                            movable.push_back(j.name);
+                        }
+                    }
+                    fail("held joint '" + name + "' is not a joint of the URDF; movable joints: " + joinNames(movable));
+                }
+                if (joints[idx].type == JointType::Fixed)
+                {
+                    fail("held joint '" + name + "' is a fixed joint");
+                }
+                if (joints[idx].variable >= 0)
+                {
+                    fail("held joint '" + name + "' is a planning joint; give values only for joints not planned");
+                }
+                const bool inLimits = joints[idx].type == JointType::Continuous
+                                          ? std::isfinite(value)
+                                          : (std::isfinite(value) && value >= lower[idx] && value <= upper[idx]);
+                if (!inLimits)
+                {
+                    fail("held joint '" + name + "' value " + fmt(value) + " is outside its limits [" +
+                         fmt(lower[idx]) + ", " + fmt(upper[idx]) + "]");
+                }
+                joints[idx].heldValue = value;
+            }
+        }
+
+        // Fold fixed and held joints into the parent frame; every planned joint opens a frame that moves about
+        // or along its local z: offset = (link in parent frame) * origin * A, with A mapping z onto the axis.
+        void compileFrames()
+        {
+            auto &links = model_->links_;
+            auto &frames = model_->frames_;
+            KinematicFrame root;
+            root.name = links[0].name;
+            root.offset = model_->basePose_;
+            frames.push_back(root);
+            links[0].frame = 0;
+            links[0].inFrame = Eigen::Isometry3d::Identity();
+            for (std::size_t li = 1; li < links.size(); ++li)
+            {
+                Link &link = links[li];
+                const UrdfJoint &j = model_->urdfJoints_[link.parentJoint];
+                const Link &parent = links[j.parentLink];
+                if (j.variable < 0)
+                {
+                    link.frame = parent.frame;
+                    link.inFrame = parent.inFrame * j.origin * jointMotion(j.type, j.axis, j.heldValue);
+                    continue;
+                }
+                const Eigen::Matrix3d a =
+                    Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), j.axis).toRotationMatrix();
+                Eigen::Isometry3d aIso = Eigen::Isometry3d::Identity();
+                aIso.linear() = a;
+                KinematicFrame f;
+                f.name = link.name;
+                f.parent = parent.frame;
+                f.variable = j.variable;
+                f.motion = j.type == JointType::Prismatic ? JointMotion::TranslateZ : JointMotion::RotateZ;
+                f.offset = parent.inFrame * j.origin * aIso;
+                link.frame = static_cast<int>(frames.size());
+                link.inFrame = Eigen::Isometry3d::Identity();
+                link.inFrame.linear() = a.transpose();
+                frames.push_back(f);
+            }
+        }
+
+        void checkPositive(double v, const std::string &what, const std::string &link, int element) const
+        {
+            if (!std::isfinite(v) || v <= 0.0)
+            {
+                fail("link '" + link + "' <collision> #" + std::to_string(element) + ": " + what + " " + fmt(v) +
+                     " must be positive and finite");
+            }
+        }
+
+        void buildCollisionGeometry(const urdf::ModelInterface &urdf)
+        {
+            std::map<std::string, SphereCover> meshCovers;  // "path|scale" -> cover in the mesh frame
+            for (std::size_t li = 0; li < model_->links_.size(); ++li)
+            {
+                const Link &link = model_->links_[li];
+                const urdf::Link &ul = *urdf.links_.at(link.name);
+                if (static_cast<int>(ul.collision_array.size()) != collisionCount_[link.name])
+                {
+                    fail("link '" + link.name + "': urdfdom accepted " + std::to_string(ul.collision_array.size()) +
+                         " of its " + std::to_string(collisionCount_[link.name]) + " <collision> elements");
+                }
+                std::vector<Sphere> linkSpheres;
+                int element = 0;
+                for (const urdf::CollisionSharedPtr &c : ul.collision_array)
+                {
+                    ++element;
+                    if (!c || !c->geometry)
+                    {
+                        continue;
+                    }
+                    CollisionGeometry g;
+                    g.link = static_cast<int>(li);
+                    g.origin = toIsometry(c->origin);
+                    if (!finitePose(g.origin))
+                    {
+                        fail("link '" + link.name + "' <collision> #" + std::to_string(element) +
+                             ": non-finite <origin>");
+                    }
+                    SphereCover cover;
+                    try
+                    {
+                        switch (c->geometry->type)
+                        {
+                            case urdf::Geometry::SPHERE:
+                            {
+                                g.type = CollisionGeometry::Type::Sphere;
+                                g.radius = static_cast<const urdf::Sphere &>(*c->geometry).radius;
+                                checkPositive(g.radius, "sphere radius", link.name, element);
+                                cover.spheres.push_back(Sphere{Eigen::Vector3d::Zero(), g.radius});
+                                break;
+                            }
+                            case urdf::Geometry::BOX:
+                            {
+                                const urdf::Vector3 &d = static_cast<const urdf::Box &>(*c->geometry).dim;
+                                g.type = CollisionGeometry::Type::Box;
+                                g.extents = Eigen::Vector3d(d.x, d.y, d.z);
+                                for (int k = 0; k < 3; ++k)
+                                {
+                                    checkPositive(g.extents[k], "box size", link.name, element);
+                                }
+                                cover = spherizer::coverBoxDetailed(g.extents, options_.spherizer);
+                                break;
+                            }
+                            case urdf::Geometry::CYLINDER:
+                            {
+                                const auto &cyl = static_cast<const urdf::Cylinder &>(*c->geometry);
+                                g.type = CollisionGeometry::Type::Cylinder;
+                                g.radius = cyl.radius;
+                                g.length = cyl.length;
+                                checkPositive(g.radius, "cylinder radius", link.name, element);
+                                checkPositive(g.length, "cylinder length", link.name, element);
+                                cover = spherizer::coverCylinderDetailed(g.radius, g.length, options_.spherizer);
+                                break;
+                            }
+                            case urdf::Geometry::MESH:
+                            {
+                                const auto &mesh = static_cast<const urdf::Mesh &>(*c->geometry);
+                                g.type = CollisionGeometry::Type::Mesh;
+                                g.scale = Eigen::Vector3d(mesh.scale.x, mesh.scale.y, mesh.scale.z);
+                                for (int k = 0; k < 3; ++k)
+                                {
+                                    checkPositive(std::abs(g.scale[k]), "mesh scale", link.name, element);
+                                }
+                                g.meshPath = resolveMeshPath(mesh.filename, model_->baseDir_, urdfName_);
+                                std::ostringstream key;
+                                key.precision(17);
+                                key << g.meshPath << '|' << g.scale.x() << ',' << g.scale.y() << ',' << g.scale.z();
+                                auto it = meshCovers.find(key.str());
+                                if (it == meshCovers.end())
+                                {
+                                    const TriangleMesh tm = loadMesh(g.meshPath, g.scale);
+                                    it = meshCovers
+                                             .emplace(key.str(), spherizer::coverMeshDetailed(tm.vertices, tm.triangles,
+                                                                                              options_.spherizer))
+                                             .first;
+                                }
+                                cover = it->second;
+                                break;
+                            }
+                            default:
+                                fail("link '" + link.name + "' <collision> #" + std::to_string(element) +
+                                     ": unsupported geometry");
+                        }
+                    }
+                    catch (const Error &e)
+                    {
+                        const std::string msg = e.what();
+                        if (msg.find(urdfName_) != std::string::npos)
+                        {
+                            throw;
+                        }
+                        fail("link '" + link.name + "' <collision> #" + std::to_string(element) + ": " + msg);
+                    }
+                    for (Sphere &s : cover.spheres)
+                    {
+                        s.center = g.origin * s.center;
+                        linkSpheres.push_back(s);
+                    }
+                    g.coverProtrusion = cover.protrusion;
+                    model_->geometries_.push_back(g);
+                }
+                if (linkSpheres.empty())
+                {
+                    continue;
+                }
+                CollisionLink cl;
+                cl.name = link.name;
+                cl.link = static_cast<int>(li);
+                cl.frame = link.frame;
+                cl.firstSphere = static_cast<int>(model_->spheres_.size());
+                cl.sphereCount = static_cast<int>(linkSpheres.size());
+                std::vector<Sphere> inFrame;
+                for (const Sphere &s : linkSpheres)
+                {
+                    CollisionSphere cs;
+                    cs.centerInLink = s.center;
+                    cs.centerInFrame = link.inFrame * s.center;
+                    cs.radius = s.radius;
+                    cs.collisionLink = static_cast<int>(model_->collisionLinks_.size());
+                    model_->spheres_.push_back(cs);
+                    inFrame.push_back(Sphere{cs.centerInFrame, cs.radius});
+                }
+                const Sphere bound = enclosingSphere(inFrame);
+                cl.boundCenterInFrame = bound.center;
+                cl.boundRadius = bound.radius;
+                model_->collisionLinks_.push_back(cl);
+            }
+        }
+
+        // Self-collision pairs: collision links on different compiled frames, minus SRDF disable_collisions,
+        // minus adjacent links. Two links are adjacent when the tree path between them has at most one non-fixed
+        // joint and every link strictly inside the path has no collision geometry (MoveIt's rule of
+        // bridging geometry-less links).
+        void buildSelfPairs(const std::string &srdfXml)
+        {
+            const auto &links = model_->links_;
+            const auto &joints = model_->urdfJoints_;
+            std::vector<int> collisionOf(links.size(), -1);
+            for (std::size_t i = 0; i < model_->collisionLinks_.size(); ++i)
+            {
+                collisionOf[model_->collisionLinks_[i].link] = static_cast<int>(i);
+            }
+            std::set<std::pair<int, int>> disabled;
+            if (!srdfXml.empty())
+            {
+                std::vector<std::string> names;
+                for (const Link &l : links)
+                {
+                    names.push_back(l.name);
+                }
+                for (const auto &[a, b] : readSrdfDisabledPairs(srdfXml, srdfName_, names))
+                {
+                    int ia = -1, ib = -1;
+                    for (std::size_t i = 0; i < links.size(); ++i)
+                    {
+                        if (links[i].name == a)
+                        {
+                            ia = static_cast<int>(i);
+                        }
+                        if (links[i].name == b)
+                        {
+                            ib = static_cast<int>(i);
+                        }
+                    }
+                    disabled.insert({std::min(ia, ib), std::max(ia, ib)});
+                }
+            }
+            for (const auto &[a, b] : options_.disabledPairs)
+            {
+                int ia = -1, ib = -1;
+                for (std::size_t i = 0; i < links.size(); ++i)
+                {
+                    ia = links[i].name == a ? static_cast<int>(i) : ia;
+                    ib = links[i].name == b ? static_cast<int>(i) : ib;
+                }
+                if (ia < 0 || ib < 0)
+                {
+                    fail("Options::disabledPairs names unknown link '" + (ia < 0 ? a : b) + "'");
+                }
+                disabled.insert({std::min(ia, ib), std::max(ia, ib)});
+            }
+            // depth of each link for path finding
+            std::vector<int> depth(links.size(), 0);
+            for (std::size_t i = 1; i < links.size(); ++i)
+            {
+                depth[i] = depth[joints[links[i].parentJoint].parentLink] + 1;
+            }
+            auto adjacent = [&](int a, int b)
+            {
+                int movable = 0;
+                bool interiorClear = true;
+                auto stepUp = [&](int &l, bool isEndpoint)
+                {
+                    if (!isEndpoint && collisionOf[l] >= 0)
+                    {
+                        interiorClear = false;
+                    }
+                    const UrdfJoint &j = joints[links[l].parentJoint];
+                    movable += j.type != JointType::Fixed ? 1 : 0;
+                    l = j.parentLink;
+                };
+                int x = a, y = b;
+                bool xEnd = true, yEnd = true;
+                while (depth[x] > depth[y])
+                {
+                    stepUp(x, xEnd);
+                    xEnd = false;
+                }
+                while (depth[y] > depth[x])
+                {
+                    stepUp(y, yEnd);
+                    yEnd = false;
+                }
+                while (x != y)
+                {
+                    stepUp(x, xEnd);
+                    stepUp(y, yEnd);
+                    xEnd = yEnd = false;
+                }
+                // x is the common ancestor: interior unless it is one of the two links
+                if (x != a && x != b && collisionOf[x] >= 0)
+                {
+                    interiorClear = false;
+                }
+                return interiorClear && movable <= 1;
+            };
+            const auto &cls = model_->collisionLinks_;
+            for (std::size_t i = 0; i < cls.size(); ++i)
+            {
+                for (std::size_t k = i + 1; k < cls.size(); ++k)
+                {
+                    if (cls[i].frame == cls[k].frame)
+                    {
+                        continue;
+                    }
+                    const int la = cls[i].link, lb = cls[k].link;
+                    if (disabled.count({std::min(la, lb), std::max(la, lb)}) != 0 || adjacent(la, lb))
+                    {
+                        continue;
+                    }
+                    model_->selfPairs_.emplace_back(static_cast<int>(i), static_cast<int>(k));
+                }
+            }
+        }
+
+        /// true when some sphere of collision link \a a touches (distance <= sum of radii) one of link \a b
+        bool inContact(const std::vector<Eigen::Vector3d> &centers, int a, int b) const
+        {
+            const auto &spheres = model_->spheres_;
+            const CollisionLink &la = model_->collisionLinks_[static_cast<std::size_t>(a)];
+            const CollisionLink &lb = model_->collisionLinks_[static_cast<std::size_t>(b)];
+            for (int i = la.firstSphere; i < la.firstSphere + la.sphereCount; ++i)
+            {
+                for (int j = lb.firstSphere; j < lb.firstSphere + lb.sphereCount; ++j)
+                {
+                    const auto si = static_cast<std::size_t>(i), sj = static_cast<std::size_t>(j);
+                    if ((centers[si] - centers[sj]).norm() <= spheres[si].radius + spheres[sj].radius)
+                    {
+                        return true;
+                    }
+                }
+            }
+            return false;
+        }
+
+        std::pair<std::string, std::string> pairNames(const std::pair<int, int> &p) const
+        {
+            return {model_->collisionLinks_[static_cast<std::size_t>(p.first)].name,
+                    model_->collisionLinks_[static_cast<std::size_t>(p.second)].name};
+        }
+
+        // MoveIt Setup Assistant's "Always" rule (disable pairs in contact in every sampled configuration) and
+        // "Default" rule (report, but keep, pairs in contact at the default configuration). Samples are uniform
+        // within the limits from a fixed-seed mt19937_64 with a portable [0, 1) mapping, so the result is the same
+        // on every platform. A pair leaves the candidates at its first contact-free sample; sampling stops early
+        // when none is left, which does not change the result.
+        void findAlwaysAndDefaultPairs()
+        {
+            std::vector<std::pair<int, int>> &pairs = model_->selfPairs_;
+            if (options_.disableAlwaysColliding)
+            {
+                if (options_.alwaysCollidingSamples == 0)
+                {
+                    fail("Options::alwaysCollidingSamples must be > 0 when disableAlwaysColliding is on");
+                }
+                std::vector<std::pair<int, int>> always = pairs;
+                std::mt19937_64 rng(options_.alwaysCollidingSeed);
+                std::vector<double> q(model_->joints_.size());
+                for (std::size_t k = 0; k < options_.alwaysCollidingSamples && !always.empty(); ++k)
+                {
+                    for (std::size_t i = 0; i < q.size(); ++i)
+                    {
+                        const PlanningJoint &j = model_->joints_[i];
+                        const double u = static_cast<double>(rng() >> 11) * 0x1.0p-53;
+                        q[i] = std::min(j.upper, j.lower + u * (j.upper - j.lower));
+                    }
+                    const std::vector<Eigen::Vector3d> centers = model_->sphereCentersReference(q.data());
+                    always.erase(std::remove_if(always.begin(), always.end(),
+                                                [&](const std::pair<int, int> &p)
+                                                { return !inContact(centers, p.first, p.second); }),
+                                 always.end());
+                }
+                for (const std::pair<int, int> &p : always)
+                {
+                    model_->alwaysPairs_.push_back(pairNames(p));
+                }
+                pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
+                                           [&](const std::pair<int, int> &p)
+                                           { return std::find(always.begin(), always.end(), p) != always.end(); }),
+                            pairs.end());
+            }
+            const std::vector<double> q = model_->defaultConfiguration();
+            const std::vector<Eigen::Vector3d> centers = model_->sphereCentersReference(q.data());
+            for (const std::pair<int, int> &p : pairs)
+            {
+                if (inContact(centers, p.first, p.second))
+                {
+                    model_->defaultPairs_.push_back(pairNames(p));
+                }
+            }
+        }
+
+        std::shared_ptr<RobotModel> model_;
+        std::string urdfName_, srdfName_;
+        const RobotModel::Options &options_;
+        std::vector<std::string> jointOrder_;
+        std::map<std::string, int> collisionCount_;
+    };
+
+    std::shared_ptr<const RobotModel> RobotModel::fromUrdfFile(const std::string &urdfPath, const std::string &srdfPath,
+                                                               const Options &options)
+    {
+        const std::string urdfXml = readTextFile(urdfPath, "URDF");
+        const std::string srdfXml = srdfPath.empty() ? std::string() : readTextFile(srdfPath, "SRDF");
+        if (!srdfPath.empty() && srdfXml.find_first_not_of(" \t\r\n") == std::string::npos)
+        {
+            throw Error("SRDF '" + srdfPath + "': the file is empty");
+        }
+        std::error_code ec;
+        const std::filesystem::path dir = std::filesystem::absolute(urdfPath, ec).parent_path();
+        RobotModelBuilder builder(dir.string(), urdfPath, srdfPath, options);
+        return builder.build(urdfXml, srdfXml);
+    }
+
+    std::shared_ptr<const RobotModel> RobotModel::fromUrdfString(const std::string &urdfXml, const std::string &baseDir,
+                                                                 const std::string &sourceName,
+                                                                 const std::string &srdfXml, const Options &options)
+    {
+        RobotModelBuilder builder(baseDir, sourceName, sourceName + " (SRDF)", options);
+        return builder.build(urdfXml, srdfXml);
+    }
+
+    std::vector<double> RobotModel::planningValues(const std::map<std::string, double> &jointValues,
+                                                   const std::string &context) const
+    {
+        for (const auto &entry : jointValues)
+            if (std::none_of(urdfJoints_.begin(), urdfJoints_.end(),
+                             [&](const UrdfJoint &j) { return j.name == entry.first; }))
+                throw Error(context + ": names joint '" + entry.first + "', which robot '" + name_ + "' (" + source_ +
+                            ") does not have");
+        std::vector<double> q(joints_.size());
+        for (std::size_t i = 0; i < joints_.size(); ++i)
+        {
+            auto it = jointValues.find(joints_[i].name);
+            if (it == jointValues.end())
+                throw Error(context + ": does not give planning joint '" + joints_[i].name + "'");
+            q[i] = it->second;
+        }
+        return q;
+    }
+
+    int RobotModel::jointIndex(const std::string &name) const
+    {
+        for (std::size_t i = 0; i < joints_.size(); ++i)
+        {
+            if (joints_[i].name == name)
+            {
+                return static_cast<int>(i);
+            }
+        }
+        std::vector<std::string> names;
+        for (const PlanningJoint &j : joints_)
+        {
+            names.push_back(j.name);
+        }
+        throw Error("robot '" + name_ + "' (" + source_ + "): no planning joint '" + name +
+                    "'; planning joints: " + joinNames(names));
+    }
+
+    int RobotModel::linkIndex(const std::string &name) const
+    {
+        for (std::size_t i = 0; i < links_.size(); ++i)
+        {
+            if (links_[i].name == name)
+            {
+                return static_cast<int>(i);
+            }
+        }
+        throw Error("robot '" + name_ + "' (" + source_ + "): no link '" + name + "'");
+    }
+
+    std::vector<double> RobotModel::defaultConfiguration() const
+    {
+        std::vector<double> q;
+        q.reserve(joints_.size());
+        for (const PlanningJoint &j : joints_)
+        {
+            q.push_back(std::clamp(0.0, j.lower, j.upper));
+        }
+        return q;
+    }
+
+    bool RobotModel::withinBounds(const double *q) const noexcept
+    {
+        for (std::size_t i = 0; i < joints_.size(); ++i)
+        {
+            const double v = q[i];
+            if (!std::isfinite(v))
+            {
+                return false;
+            }
+            if (joints_[i].type != JointType::Continuous && (v < joints_[i].lower || v > joints_[i].upper))
+            {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    std::vector<Eigen::Isometry3d> RobotModel::linkTransformsReference(const double *q) const
+    {
+        // links_ is in topological order (parents first), so one pass suffices.
+        std::vector<Eigen::Isometry3d> out(links_.size(), Eigen::Isometry3d::Identity());
+        for (std::size_t i = 0; i < links_.size(); ++i)
+        {
+            const int pj = links_[i].parentJoint;
+            if (pj < 0)
+            {
+                out[i] = basePose_;
+                continue;
+            }
+            const UrdfJoint &j = urdfJoints_[pj];
+            const double v = j.variable >= 0 ? q[j.variable] : j.heldValue;
+            out[i] = out[j.parentLink] * j.origin * jointMotion(j.type, j.axis, v);
+        }
+        return out;
+    }
+
+    std::vector<Eigen::Vector3d> RobotModel::sphereCentersReference(const double *q) const
+    {
+        const std::vector<Eigen::Isometry3d> t = linkTransformsReference(q);
+        std::vector<Eigen::Vector3d> out;
+        out.reserve(spheres_.size());
+        for (const CollisionSphere &s : spheres_)
+        {
+            out.push_back(t[collisionLinks_[s.collisionLink].link] * s.centerInLink);
+        }
+        return out;
+    }
+}  // namespace ropras::ompl_ext

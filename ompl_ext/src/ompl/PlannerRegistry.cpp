@@ -1,0 +1,186 @@
+#include "ropras/ompl_ext/ompl/PlannerRegistry.h"
+
+#include <ompl/geometric/planners/AnytimePathShortening.h>
+#include <ompl/geometric/planners/cforest/CForest.h>
+#include <ompl/geometric/planners/est/BiEST.h>
+#include <ompl/geometric/planners/est/EST.h>
+#include <ompl/geometric/planners/est/ProjEST.h>
+#include <ompl/geometric/planners/fmt/BFMT.h>
+#include <ompl/geometric/planners/fmt/FMT.h>
+#include <ompl/geometric/planners/informedtrees/ABITstar.h>
+#include <ompl/geometric/planners/informedtrees/AITstar.h>
+#include <ompl/geometric/planners/informedtrees/BITstar.h>
+#include <ompl/geometric/planners/kpiece/BKPIECE1.h>
+#include <ompl/geometric/planners/kpiece/KPIECE1.h>
+#include <ompl/geometric/planners/kpiece/LBKPIECE1.h>
+#include <ompl/geometric/planners/pdst/PDST.h>
+#include <ompl/geometric/planners/prm/LazyPRM.h>
+#include <ompl/geometric/planners/prm/LazyPRMstar.h>
+#include <ompl/geometric/planners/prm/PRM.h>
+#include <ompl/geometric/planners/prm/PRMstar.h>
+#include <ompl/geometric/planners/prm/SPARS.h>
+#include <ompl/geometric/planners/prm/SPARStwo.h>
+#include <ompl/geometric/planners/rlrt/BiRLRT.h>
+#include <ompl/geometric/planners/rlrt/RLRT.h>
+#include <ompl/geometric/planners/rrt/BiTRRT.h>
+#include <ompl/geometric/planners/rrt/InformedRRTstar.h>
+#include <ompl/geometric/planners/rrt/LBTRRT.h>
+#include <ompl/geometric/planners/rrt/LazyLBTRRT.h>
+#include <ompl/geometric/planners/rrt/LazyRRT.h>
+#include <ompl/geometric/planners/rrt/RRT.h>
+#include <ompl/geometric/planners/rrt/RRTConnect.h>
+#include <ompl/geometric/planners/rrt/RRTXstatic.h>
+#include <ompl/geometric/planners/rrt/RRTsharp.h>
+#include <ompl/geometric/planners/rrt/RRTstar.h>
+#include <ompl/geometric/planners/rrt/SORRTstar.h>
+#include <ompl/geometric/planners/rrt/TRRT.h>
+#include <ompl/geometric/planners/rrt/pRRT.h>
+#include <ompl/geometric/planners/sbl/SBL.h>
+#include <ompl/geometric/planners/sbl/pSBL.h>
+#include <ompl/geometric/planners/sst/SST.h>
+#include <ompl/geometric/planners/stride/STRIDE.h>
+#include <mutex>
+
+#include "ropras/core/Error.h"
+#include "ropras/core/NameList.h"
+
+namespace ropras::ompl_ext
+{
+    namespace
+    {
+        template <typename P>
+        ompl::base::PlannerAllocator make()
+        {
+            return [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<P>(si); };
+        }
+
+        std::mutex registryMutex;
+    }  // namespace
+
+    // Own planners register themselves from their translation units through this hook.
+    void registerOwnPlanners(PlannerRegistry &registry);
+
+    PlannerRegistry::PlannerRegistry()
+    {
+        namespace og = ompl::geometric;
+        allocators_ = {
+            {"ABITstar", make<og::ABITstar>()},
+            {"AITstar", make<og::AITstar>()},
+            {"AnytimePathShortening", make<og::AnytimePathShortening>()},
+            {"BFMT", make<og::BFMT>()},
+            {"BiEST", make<og::BiEST>()},
+            {"BiRLRT", make<og::BiRLRT>()},
+            {"BiTRRT", make<og::BiTRRT>()},
+            {"BITstar", make<og::BITstar>()},
+            {"BKPIECE1", make<og::BKPIECE1>()},
+            {"CForest", make<og::CForest>()},
+            {"EST", make<og::EST>()},
+            {"FMT", make<og::FMT>()},
+            {"InformedRRTstar", make<og::InformedRRTstar>()},
+            {"KPIECE1", make<og::KPIECE1>()},
+            {"LazyLBTRRT", make<og::LazyLBTRRT>()},
+            {"LazyPRM", make<og::LazyPRM>()},
+            {"LazyPRMstar", make<og::LazyPRMstar>()},
+            {"LazyRRT", make<og::LazyRRT>()},
+            {"LBKPIECE1", make<og::LBKPIECE1>()},
+            {"LBTRRT", make<og::LBTRRT>()},
+            {"PDST", make<og::PDST>()},
+            {"PRM", make<og::PRM>()},
+            {"PRMstar", make<og::PRMstar>()},
+            {"ProjEST", make<og::ProjEST>()},
+            {"pRRT", make<og::pRRT>()},
+            {"pSBL", make<og::pSBL>()},
+            {"RLRT", make<og::RLRT>()},
+            {"RRT", make<og::RRT>()},
+            {"RRTConnect", make<og::RRTConnect>()},
+            {"RRTsharp", make<og::RRTsharp>()},
+            {"RRTstar", make<og::RRTstar>()},
+            {"RRTXstatic", make<og::RRTXstatic>()},
+            {"SBL", make<og::SBL>()},
+            {"SORRTstar", make<og::SORRTstar>()},
+            {"SPARS", make<og::SPARS>()},
+            {"SPARStwo", make<og::SPARStwo>()},
+            {"SST", make<og::SST>()},
+            {"STRIDE", make<og::STRIDE>()},
+            {"TRRT", make<og::TRRT>()},
+        };
+    }
+
+    PlannerRegistry &PlannerRegistry::instance()
+    {
+        static PlannerRegistry *registry = []
+        {
+            auto *r = new PlannerRegistry();
+            registerOwnPlanners(*r);
+            return r;
+        }();
+        return *registry;
+    }
+
+    void PlannerRegistry::add(const std::string &name, const ompl::base::PlannerAllocator &allocator)
+    {
+        if (name.empty() || !allocator)
+            throw Error("PlannerRegistry::add: a planner needs a name and an allocator (got name '" + name + "')");
+        std::lock_guard<std::mutex> lock(registryMutex);
+        allocators_[name] = allocator;
+    }
+
+    bool PlannerRegistry::contains(const std::string &name) const
+    {
+        std::lock_guard<std::mutex> lock(registryMutex);
+        return allocators_.count(name) != 0;
+    }
+
+    std::vector<std::string> PlannerRegistry::names() const
+    {
+        std::lock_guard<std::mutex> lock(registryMutex);
+        std::vector<std::string> out;
+        for (const auto &entry : allocators_)
+            out.push_back(entry.first);
+        return out;
+    }
+
+    ompl::base::PlannerAllocator PlannerRegistry::allocator(const std::string &name,
+                                                            const std::map<std::string, std::string> &params) const
+    {
+        ompl::base::PlannerAllocator base;
+        {
+            std::lock_guard<std::mutex> lock(registryMutex);
+            auto it = allocators_.find(name);
+            if (it != allocators_.end())
+                base = it->second;
+        }
+        if (!base)
+            throw Error("unknown planner '" + name + "'; known planners: " + joinNames(names()));
+        return [base, params](const ompl::base::SpaceInformationPtr &si)
+        {
+            ompl::base::PlannerPtr planner = base(si);
+            setPlannerParams(*planner, params);
+            return planner;
+        };
+    }
+
+    ompl::base::PlannerPtr PlannerRegistry::create(const std::string &name, const ompl::base::SpaceInformationPtr &si,
+                                                   const std::map<std::string, std::string> &params) const
+    {
+        if (!si)
+            throw Error("PlannerRegistry::create('" + name + "'): null SpaceInformation");
+        return allocator(name, params)(si);
+    }
+
+    void setPlannerParams(ompl::base::Planner &planner, const std::map<std::string, std::string> &params)
+    {
+        for (const auto &[key, value] : params)
+        {
+            if (!planner.params().hasParam(key))
+            {
+                std::vector<std::string> known;
+                planner.params().getParamNames(known);
+                throw Error("planner " + planner.getName() + " has no parameter '" + key +
+                            "'; its parameters: " + joinNames(known));
+            }
+            if (!planner.params().setParam(key, value))
+                throw Error("planner " + planner.getName() + ": cannot set parameter '" + key + "' to '" + value + "'");
+        }
+    }
+}  // namespace ropras::ompl_ext
