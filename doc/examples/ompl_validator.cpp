@@ -10,8 +10,8 @@
 #include <ropras/ompl_ext/collision/CollisionChecker.h>
 #include <ropras/ompl_ext/ompl/MotionValidator.h>
 #include <ropras/ompl_ext/ompl/PlanningContext.h>
-#include <ropras/ompl_ext/scene/SceneYaml.h>
 #include <ropras/ompl_ext/ompl/StateValidityChecker.h>
+#include <ropras/ompl_ext/scene/SceneYaml.h>
 
 namespace ob = ompl::base;
 namespace og = ompl::geometric;

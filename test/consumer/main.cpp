@@ -3,8 +3,8 @@
 #include <vector>
 
 #include <ropras/ompl_ext/collision/CollisionChecker.h>
-#include <ropras/ompl_ext/scene/Environment.h>
 #include <ropras/ompl_ext/model/RobotModel.h>
+#include <ropras/ompl_ext/scene/Environment.h>
 
 int main(int argc, char **argv)
 {

@@ -15,8 +15,8 @@
 
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/collision/CollisionChecker.h"
-#include "ropras/ompl_ext/scene/PointCloud.h"
 #include "ropras/ompl_ext/model/RobotModel.h"
+#include "ropras/ompl_ext/scene/PointCloud.h"
 #include "ropras/ompl_ext/scene/SceneYaml.h"
 
 using namespace ropras::ompl_ext;

@@ -14,9 +14,9 @@
 
 #include "ExpectError.h"
 #include "ropras/ompl_ext/collision/CollisionChecker.h"
-#include "ropras/ompl_ext/scene/Environment.h"
 #include "ropras/ompl_ext/model/RobotModel.h"
 #include "ropras/ompl_ext/model/SphereReach.h"
+#include "ropras/ompl_ext/scene/Environment.h"
 
 using namespace ropras::ompl_ext;
 

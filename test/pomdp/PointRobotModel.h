@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "ropras/core/Error.h"
-#include "ropras/ompl_ext/scene/Environment.h"
 #include "ropras/ompl_ext/model/RobotModel.h"
+#include "ropras/ompl_ext/scene/Environment.h"
 #include "ropras/pomdp/Model.h"
 #include "ropras/pomdp/OmplReferencePolicy.h"
 #include "ropras/pomdp/SolverFactory.h"

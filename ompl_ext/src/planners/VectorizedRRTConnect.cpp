@@ -16,9 +16,9 @@
 #include "ropras/core/Error.h"
 #include "ropras/core/Rng.h"
 #include "ropras/ompl_ext/collision/CollisionChecker.h"
-#include "ropras/ompl_ext/planners/HaltonSequence.h"
 #include "ropras/ompl_ext/ompl/MotionValidator.h"
 #include "ropras/ompl_ext/ompl/PlannerRegistry.h"
+#include "ropras/ompl_ext/planners/HaltonSequence.h"
 
 namespace ropras::ompl_ext
 {

@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "ropras/ompl_ext/collision/CollisionChecker.h"
-#include "ropras/ompl_ext/scene/Environment.h"
+#include "ropras/ompl_ext/model/RobotModel.h"
 #include "ropras/ompl_ext/ompl/MotionValidator.h"
 #include "ropras/ompl_ext/ompl/PlanningContext.h"
-#include "ropras/ompl_ext/model/RobotModel.h"
+#include "ropras/ompl_ext/scene/Environment.h"
 #include "ropras/pomdp/ParameterMap.h"
 
 namespace ropras::pomdp

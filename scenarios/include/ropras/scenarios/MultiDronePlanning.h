@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "ropras/ompl_ext/scene/Environment.h"
 #include "ropras/ompl_ext/model/RobotModel.h"
+#include "ropras/ompl_ext/scene/Environment.h"
 #include "ropras/pomdp/OmplReferencePolicy.h"
 #include "ropras/pomdp/SamplingHeuristic.h"
 #include "ropras/scenarios/MultiDroneModel.h"

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "ropras/ompl_ext/scene/Environment.h"
 #include "ropras/ompl_ext/model/RobotModel.h"
+#include "ropras/ompl_ext/scene/Environment.h"
 #include "ropras/pomdp/OmplReferencePolicy.h"
 #include "ropras/pomdp/TargetSpace.h"
 #include "ropras/scenarios/ModelScenario.h"

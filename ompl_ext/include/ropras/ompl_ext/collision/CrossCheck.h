@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "ropras/ompl_ext/collision/CollisionChecker.h"
-#include "ropras/ompl_ext/scene/Environment.h"
 #include "ropras/ompl_ext/model/RobotModel.h"
+#include "ropras/ompl_ext/scene/Environment.h"
 
 namespace ropras::ompl_ext
 {

@@ -4,8 +4,8 @@
 #include <memory>
 #include <string>
 
-#include "ropras/ompl_ext/scene/Environment.h"
 #include "ropras/ompl_ext/model/RobotModel.h"
+#include "ropras/ompl_ext/scene/Environment.h"
 
 namespace ropras::ompl_ext
 {
