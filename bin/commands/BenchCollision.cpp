@@ -27,7 +27,7 @@ namespace
 
     struct BenchArgs
     {
-        std::string urdf, srdf, meshUrdf, scenes, json, backend{"best"}, clock{"wall"};
+        std::string urdf, srdf, meshUrdf, scenes, json, backend{"best"}, clock{"wall"}, attached;
         int repeat{5};
         std::size_t configs{1000};    ///< random configurations per scene
         std::size_t edges{40};        ///< valid and invalid 1 rad edges per scene (each)
@@ -80,7 +80,47 @@ namespace
         std::vector<double> configs;                 ///< row-major, configs x dof
         std::vector<double> valid, invalid;          ///< single configurations by verdict
         std::vector<double> edgeValid, edgeInvalid;  ///< pairs of rows (q0, q1)
+        Environment held;                            ///< --attached: the scene (as base) with the held bodies
+        std::vector<double> validHeld;               ///< configurations valid while holding them
     };
+
+    /// --attached: cost of holding bodies (same configurations with and without them) and of particle scenes
+    struct HeldRows
+    {
+        std::vector<double> without, with, batchWithout, batchWith, particle;
+    };
+
+    /** \brief ns to make one particle's scene: an overlay of \a base with four movable objects (two cylinders, a
+        box, a sphere) copied from a template and moved to new poses. */
+    double particleSceneNs(const std::shared_ptr<const Environment> &base, std::size_t &sink)
+    {
+        Environment movable(base);
+        movable.addCylinder("can0", Eigen::Isometry3d::Identity(), 0.03, 0.12);
+        movable.addCylinder("can1", Eigen::Isometry3d::Identity(), 0.03, 0.12);
+        movable.addBox("box", Eigen::Isometry3d::Identity(), Eigen::Vector3d(0.05, 0.05, 0.1));
+        movable.addSphere("ball", Eigen::Vector3d::Zero(), 0.04);
+        constexpr std::size_t n = 2000;
+        std::vector<Environment> particles;
+        particles.reserve(n);
+        const double ns = nsPer(n,
+                                [&]
+                                {
+                                    for (std::size_t k = 0; k < n; ++k)
+                                    {
+                                        particles.push_back(movable);
+                                        Environment &e = particles.back();
+                                        Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+                                        for (int id = 0; id < 4; ++id)
+                                        {
+                                            pose.translation() =
+                                                Eigen::Vector3d(0.4 + 0.001 * double(k), 0.1 * id, 0.3);
+                                            e.setObjectPose(id, pose);
+                                        }
+                                    }
+                                });
+        sink += particles.back().objectCount();
+        return ns;
+    }
 
     SimdBackend parseBackend(const std::string &name)
     {
@@ -121,10 +161,19 @@ namespace
             for (std::size_t j = 0; j < dof; ++j)
                 q[j] = std::uniform_real_distribution<double>(robot->joints()[j].lower, robot->joints()[j].upper)(rng);
         };
+        // --attached: bodies held by the robot (robot_state.attached_collision_objects of a PlanningScene file)
+        std::optional<Environment> heldBodies;
+        if (!a.attached.empty())
+        {
+            heldBodies = loadPlanningScene(a.attached, robot);
+            if (heldBodies->attachedCount() == 0)
+                throw Error("bench-collision: " + a.attached +
+                            " attaches no object (robot_state.attached_collision_objects)");
+        }
         std::vector<Scene> scenes;
         for (const std::string &path : paths)
         {
-            Scene s{path, loadPlanningScene(path), {}, {}, {}, {}, {}};
+            Scene s{path, loadPlanningScene(path), {}, {}, {}, {}, {}, {}, {}};
             s.configs.resize(a.configs * dof);
             for (std::size_t k = 0; k < a.configs; ++k)
             {
@@ -132,6 +181,15 @@ namespace
                 uniform(q);
                 auto &bucket = checker.isValid(s.env, q) ? s.valid : s.invalid;
                 bucket.insert(bucket.end(), q, q + dof);
+            }
+            if (heldBodies)
+            {
+                s.held = Environment(std::make_shared<const Environment>(s.env));
+                for (std::size_t i = 0; i < heldBodies->attachedCount(); ++i)
+                    s.held.attach(robot, heldBodies->attachedBody(i));
+                for (std::size_t k = 0; k < s.valid.size(); k += dof)
+                    if (checker.isValid(s.held, s.valid.data() + k))
+                        s.validHeld.insert(s.validHeld.end(), s.valid.data() + k, s.valid.data() + k + dof);
             }
             std::vector<double> q0(dof), q1(dof), dir(dof);
             for (std::size_t attempt = 0; attempt < 200 * a.edges && (s.edgeValid.size() < 2 * a.edges * dof ||
@@ -191,6 +249,7 @@ namespace
             nEdgeValid += s.edgeValid.size() / (2 * dof);
             nEdgeInvalid += s.edgeInvalid.size() / (2 * dof);
         }
+        HeldRows held;
         for (int rep = 0; rep < a.repeat; ++rep)
         {
             fk.push_back(nsPer(totalConfigs,
@@ -254,6 +313,39 @@ namespace
                                                                 ? 1
                                                                 : 0;
                                         }));
+            if (heldBodies)
+            {
+                std::size_t nHeld = 0;
+                for (const Scene &s : scenes)
+                    nHeld += s.validHeld.size() / dof;
+                // interleaved: the same configurations without and with the held bodies
+                const auto singles = [&](bool holding)
+                {
+                    return nsPer(
+                        nHeld,
+                        [&]
+                        {
+                            for (const Scene &s : scenes)
+                                for (std::size_t k = 0; k < s.validHeld.size(); k += dof)
+                                    sink += checker.isValid(holding ? s.held : s.env, s.validHeld.data() + k) ? 1 : 0;
+                        });
+                };
+                const auto batches = [&](bool holding)
+                {
+                    return nsPer(totalConfigs,
+                                 [&]
+                                 {
+                                     for (const Scene &s : scenes)
+                                         sink += checker.isValidBatch(holding ? s.held : s.env, s.configs.data(),
+                                                                      a.configs / w * w, verdicts.get());
+                                 });
+                };
+                held.without.push_back(singles(false));
+                held.with.push_back(singles(true));
+                held.batchWithout.push_back(batches(false));
+                held.batchWith.push_back(batches(true));
+                held.particle.push_back(particleSceneNs(std::make_shared<const Environment>(scenes.front().env), sink));
+            }
             // FCL: its object cache is rebuilt per scene, outside the timed loops
             double fclNs = 0.0, meshNs = 0.0;
             std::size_t fclCount = 0, meshCount = 0;
@@ -304,6 +396,20 @@ namespace
             {"fcl_sphere_ns", "FCL, same spheres (per config)", median(fclSphere), fclSphere.empty() ? 0u : 1u},
             {"fcl_mesh_ns", "FCL, URDF meshes (per config)", median(fclMesh), fclMesh.empty() ? 0u : 1u},
         };
+        std::vector<Row> heldRows;
+        if (heldBodies)
+        {
+            std::size_t nHeld = 0;
+            for (const Scene &s : scenes)
+                nHeld += s.validHeld.size() / dof;
+            heldRows = {
+                {"held_single_without_ns", "single valid, not holding", median(held.without), nHeld},
+                {"held_single_with_ns", "single valid, holding --attached", median(held.with), nHeld},
+                {"held_batch_without_ns", "batch of 8, not holding", median(held.batchWithout), totalConfigs},
+                {"held_batch_with_ns", "batch of 8, holding --attached", median(held.batchWith), totalConfigs},
+                {"particle_scene_ns", "particle scene, 4 movable objects", median(held.particle), 2000},
+            };
+        }
         std::cout << "robot " << robot->name() << " (" << dof << " dof, " << robot->spheres().size()
                   << " spheres), backend " << simdBackendName(checker.backend()) << ", " << scenes.size() << " scenes, "
                   << a.configs << " configs/scene, median of " << a.repeat << " repetitions\n";
@@ -316,7 +422,9 @@ namespace
                   << " (the others cannot touch within the joint limits)\n";
         std::cout << std::left << std::setw(36) << "measurement" << std::right << std::setw(14) << "ns" << std::setw(12)
                   << "samples" << '\n';
-        for (const Row &r : rows)
+        std::vector<Row> allRows = rows;
+        allRows.insert(allRows.end(), heldRows.begin(), heldRows.end());
+        for (const Row &r : allRows)
         {
             std::cout << std::left << std::setw(36) << r.what << std::right << std::setw(14) << std::fixed
                       << std::setprecision(1) << r.ns << std::setw(12)
@@ -332,7 +440,7 @@ namespace
             j["repeat"] = a.repeat;
             j["resolution"] = a.resolution;
             j["clock"] = a.clock;
-            for (const Row &r : rows)
+            for (const Row &r : allRows)
                 j[r.key] = std::isnan(r.ns) ? nlohmann::json(nullptr) : nlohmann::json(r.ns);
             std::ofstream out(a.json);
             if (!out)
@@ -374,6 +482,10 @@ namespace
         app.add_option("--backend", args->backend, "best, scalar or avx2")->capture_default_str();
         app.add_option("--clock", args->clock, "wall (steady clock) or cpu (thread CPU time: use on a loaded machine)")
             ->capture_default_str();
+        app.add_option("--attached", args->attached,
+                       "PlanningScene YAML whose robot_state.attached_collision_objects the robot holds: adds rows for "
+                       "the same valid configurations with and without them, and the cost of a particle scene")
+            ->check(CLI::ExistingFile);
         app.add_option("--seed", args->seed, "random seed")->capture_default_str();
         return [args] { return run(*args); };
     }

@@ -39,13 +39,15 @@ namespace
     {
         ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
         ompl::RNG::setSeed(a.seed);
-        auto environment = std::make_shared<Environment>(loadPlanningScene(a.scene));
+        // the robot first: the scene may attach objects to its links (robot_state.attached_collision_objects)
+        const auto robotModel = RobotModel::fromUrdfFile(a.urdf, a.srdf);
+        auto environment = std::make_shared<Environment>(loadPlanningScene(a.scene, robotModel));
         const MotionPlanRequest request = loadMotionPlanRequest(a.request);
         PlanningContextOptions options;
         options.planner = a.planner;
         options.plannerParams = ropras::bin::keyValueOptions(a.params, "--param");
         options.resolution = a.resolution;
-        PlanningContext context = makePlanningContext(a.urdf, a.srdf, environment, RobotModel::Options(), options);
+        PlanningContext context = makePlanningContext(robotModel, environment, options);
         const RobotModel &robot = *context.robot;
         auto &ss = *context.setup;
 

@@ -8,13 +8,13 @@
 #include <unordered_set>
 #include <vector>
 
-#include "model/EnclosingSphere.h"
-#include "ropras/core/Error.h"
-#include "ropras/ompl_ext/model/SphereReach.h"
 #include "collision/simd/Avx2Vec.h"
 #include "collision/simd/Kernels.h"
 #include "collision/simd/KinematicProgram.h"
 #include "collision/simd/ScalarVec.h"
+#include "model/EnclosingSphere.h"
+#include "ropras/core/Error.h"
+#include "ropras/ompl_ext/model/SphereReach.h"
 
 namespace ropras::ompl_ext
 {
@@ -406,6 +406,7 @@ namespace ropras::ompl_ext
         program_ = std::make_unique<Program>();
         KinematicProgram &p = program_->kp;
         const RobotModel &model = *robot_;
+        p.model = robot_.get();
         p.dof = static_cast<int>(model.dof());
 
         p.rotational.assign(model.dof(), 0);
@@ -542,6 +543,7 @@ namespace ropras::ompl_ext
             {
                 simd::LinkOp op;
                 op.frame = cl.frame;
+                op.collisionLink = static_cast<int>(c);
                 Eigen::Vector3d centre = cl.boundCenterInFrame;
                 double bound = cl.boundRadius;
                 if (groups.size() > 1)

@@ -45,23 +45,24 @@ namespace ropras::ompl_ext
         {
             numbers.clear();
             clouds.clear();
-            for (std::size_t id = 0; id < env.objectCount(); ++id)
-            {
-                const auto &shapes = env.objectShapes(int(id));
-                numbers.push_back(double(shapes.size()));
-                for (std::size_t k = 0; k < shapes.size(); ++k)
+            for (const Environment *e = &env; e != nullptr; e = e->base())
+                for (std::size_t id = 0; id < e->objectCount(); ++id)
                 {
-                    const Shape &s = shapes[k];
-                    const Eigen::Isometry3d pose = env.shapeWorldPose(int(id), k);
-                    numbers.push_back(double(int(s.type)));
-                    numbers.push_back(s.radius);
-                    numbers.push_back(s.length);
-                    numbers.insert(numbers.end(), s.extents.data(), s.extents.data() + 3);
-                    const Eigen::Matrix<double, 3, 4> affine = pose.affine();
-                    numbers.insert(numbers.end(), affine.data(), affine.data() + 12);
-                    clouds.push_back(s.cloud.get());
+                    const auto &shapes = e->objectShapes(int(id));
+                    numbers.push_back(double(shapes.size()));
+                    for (std::size_t k = 0; k < shapes.size(); ++k)
+                    {
+                        const Shape &s = shapes[k];
+                        const Eigen::Isometry3d pose = e->shapeWorldPose(int(id), k);
+                        numbers.push_back(double(int(s.type)));
+                        numbers.push_back(s.radius);
+                        numbers.push_back(s.length);
+                        numbers.insert(numbers.end(), s.extents.data(), s.extents.data() + 3);
+                        const Eigen::Matrix<double, 3, 4> affine = pose.affine();
+                        numbers.insert(numbers.end(), affine.data(), affine.data() + 12);
+                        clouds.push_back(s.cloud.get());
+                    }
                 }
-            }
         }
 
         void *labelTag(std::size_t index)
@@ -84,47 +85,48 @@ namespace ropras::ompl_ext
                 scene->labels.push_back(std::move(label));
                 scene->objects.push_back(std::move(object));
             };
-            for (std::size_t id = 0; id < env.objectCount(); ++id)
-            {
-                const auto &shapes = env.objectShapes(int(id));
-                for (std::size_t k = 0; k < shapes.size(); ++k)
+            for (const Environment *e = &env; e != nullptr; e = e->base())
+                for (std::size_t id = 0; id < e->objectCount(); ++id)
                 {
-                    const Shape &s = shapes[k];
-                    const Eigen::Isometry3d pose = env.shapeWorldPose(int(id), k);
-                    std::string label = "object '" + env.objectName(int(id)) + "'";
-                    if (shapes.size() > 1)
-                        label += " primitive " + std::to_string(k);
-                    switch (s.type)
+                    const auto &shapes = e->objectShapes(int(id));
+                    for (std::size_t k = 0; k < shapes.size(); ++k)
                     {
-                        case ShapeType::Sphere:
-                            add(std::make_shared<fcl::Sphered>(s.radius), pose, label);
-                            break;
-                        case ShapeType::Box:
-                            add(std::make_shared<fcl::Boxd>(s.extents), pose, label);
-                            break;
-                        case ShapeType::Cylinder:
-                            add(std::make_shared<fcl::Cylinderd>(s.radius, s.length), pose, label);
-                            break;
-                        case ShapeType::Capsule:
-                            add(std::make_shared<fcl::Capsuled>(s.radius, s.length), pose, label);
-                            break;
-                        case ShapeType::PointCloud:
+                        const Shape &s = shapes[k];
+                        const Eigen::Isometry3d pose = e->shapeWorldPose(int(id), k);
+                        std::string label = "object '" + e->objectName(int(id)) + "'";
+                        if (shapes.size() > 1)
+                            label += " primitive " + std::to_string(k);
+                        switch (s.type)
                         {
-                            if (!s.cloud)
+                            case ShapeType::Sphere:
+                                add(std::make_shared<fcl::Sphered>(s.radius), pose, label);
                                 break;
-                            auto sphere = std::make_shared<fcl::Sphered>(double(s.cloud->pointRadius()));
-                            const auto &points = s.cloud->points();
-                            for (std::size_t i = 0; i < points.size(); ++i)
+                            case ShapeType::Box:
+                                add(std::make_shared<fcl::Boxd>(s.extents), pose, label);
+                                break;
+                            case ShapeType::Cylinder:
+                                add(std::make_shared<fcl::Cylinderd>(s.radius, s.length), pose, label);
+                                break;
+                            case ShapeType::Capsule:
+                                add(std::make_shared<fcl::Capsuled>(s.radius, s.length), pose, label);
+                                break;
+                            case ShapeType::PointCloud:
                             {
-                                Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
-                                at.translation() = pose * points[i].cast<double>();
-                                add(sphere, at, label + " point " + std::to_string(i));
+                                if (!s.cloud)
+                                    break;
+                                auto sphere = std::make_shared<fcl::Sphered>(double(s.cloud->pointRadius()));
+                                const auto &points = s.cloud->points();
+                                for (std::size_t i = 0; i < points.size(); ++i)
+                                {
+                                    Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
+                                    at.translation() = pose * points[i].cast<double>();
+                                    add(sphere, at, label + " point " + std::to_string(i));
+                                }
+                                break;
                             }
-                            break;
                         }
                     }
                 }
-            }
             scene->manager = std::make_unique<fcl::DynamicAABBTreeCollisionManagerd>();
             std::vector<fcl::CollisionObjectd *> raw;
             raw.reserve(scene->objects.size());
@@ -293,6 +295,35 @@ namespace ropras::ompl_ext
                 return best;
             }
 
+            /// label of the first element outside the groups in \a skip that touches \a object; "" when none
+            std::string touching(const fcl::CollisionObjectd &object, const std::vector<std::uint8_t> &skip) const
+            {
+                for (const Element &element : elements_)
+                {
+                    if (element.group >= 0 && std::size_t(element.group) < skip.size() &&
+                        skip[std::size_t(element.group)])
+                        continue;
+                    if (!element.object->getAABB().overlap(object.getAABB()))
+                        continue;
+                    fcl::CollisionRequestd request;
+                    fcl::CollisionResultd result;
+                    if (fcl::collide(element.object.get(), &object, request, result) > 0)
+                        return element.label;
+                }
+                return "";
+            }
+
+            /// smallest signed distance from \a object to an element outside the groups in \a skip
+            double distanceTo(const fcl::CollisionObjectd &object, const std::vector<std::uint8_t> &skip) const
+            {
+                double best = std::numeric_limits<double>::infinity();
+                for (const Element &element : elements_)
+                    if (element.group < 0 || std::size_t(element.group) >= skip.size() ||
+                        !skip[std::size_t(element.group)])
+                        best = std::min(best, signedPairDistance(element.object.get(), &object));
+                return best;
+            }
+
         private:
             std::vector<fcl::AABBd> groupBoxes() const
             {
@@ -319,6 +350,98 @@ namespace ropras::ompl_ext
             std::size_t reservedGroups_{0};
         };
 
+        /// an attached body's spheres posed by the reference FK, as FCL spheres
+        struct PosedAttachment
+        {
+            std::string label;
+            int frame{-1};
+            const std::vector<std::uint8_t> *mayTouch{nullptr};
+            std::vector<std::unique_ptr<fcl::CollisionObjectd>> spheres;
+        };
+
+        std::vector<PosedAttachment> poseAttachments(const RobotModel &robot, const Environment &env, const double *q)
+        {
+            std::vector<PosedAttachment> out;
+            if (!env.hasAttachedBodies())
+                return out;
+            const std::vector<Eigen::Isometry3d> transforms = robot.linkTransformsReference(q);
+            for (const Environment *e = &env; e != nullptr; e = e->base())
+                for (std::size_t i = 0; i < e->attachedCount(); ++i)
+                {
+                    const AttachedSpheres &a = e->attachedSpheres(i);
+                    const std::string &name = e->attachedBody(i).name;
+                    if (a.robot.get() != &robot)
+                        throw Error("FCL reference: attached body '" + name + "' was attached to another robot model " +
+                                    "than '" + robot.name() + "'");
+                    PosedAttachment posed;
+                    posed.label = "attached body '" + name + "'";
+                    posed.frame = a.frame;
+                    posed.mayTouch = &a.mayTouch;
+                    for (const Sphere &s : a.spheresInLink)
+                    {
+                        Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
+                        at.translation() = transforms[std::size_t(a.link)] * s.center;
+                        auto object =
+                            std::make_unique<fcl::CollisionObjectd>(std::make_shared<fcl::Sphered>(s.radius), at);
+                        object->computeAABB();
+                        posed.spheres.push_back(std::move(object));
+                    }
+                    out.push_back(std::move(posed));
+                }
+            return out;
+        }
+
+        bool objectsCollide(const fcl::CollisionObjectd &a, const fcl::CollisionObjectd &b)
+        {
+            fcl::CollisionRequestd request;
+            fcl::CollisionResultd result;
+            return a.getAABB().overlap(b.getAABB()) && fcl::collide(&a, &b, request, result) > 0;
+        }
+
+        /// first contact of an attached body (obstacles, robot links it may not touch, bodies on other frames)
+        std::string attachedCollision(const Body &body, const ObstacleScene &scene,
+                                      const std::vector<PosedAttachment> &attached)
+        {
+            for (std::size_t k = 0; k < attached.size(); ++k)
+                for (const auto &sphere : attached[k].spheres)
+                {
+                    if (!scene.objects.empty())
+                    {
+                        CollideData data;
+                        scene.manager->collide(sphere.get(), &data, collideCallback);
+                        if (data.hit)
+                            return attached[k].label + " touches " + scene.labels[tagLabel(data.obstacle)];
+                    }
+                    const std::string link = body.touching(*sphere, *attached[k].mayTouch);
+                    if (!link.empty())
+                        return attached[k].label + " touches " + link;
+                    for (std::size_t m = k + 1; m < attached.size(); ++m)
+                        if (attached[m].frame != attached[k].frame)
+                            for (const auto &other : attached[m].spheres)
+                                if (objectsCollide(*sphere, *other))
+                                    return attached[k].label + " touches " + attached[m].label;
+                }
+            return "";
+        }
+
+        double attachedDistance(const Body &body, const ObstacleScene &scene,
+                                const std::vector<PosedAttachment> &attached)
+        {
+            double best = std::numeric_limits<double>::infinity();
+            for (std::size_t k = 0; k < attached.size(); ++k)
+                for (const auto &sphere : attached[k].spheres)
+                {
+                    for (const auto &obstacle : scene.objects)
+                        best = std::min(best, signedPairDistance(sphere.get(), obstacle.get()));
+                    best = std::min(best, body.distanceTo(*sphere, *attached[k].mayTouch));
+                    for (std::size_t m = k + 1; m < attached.size(); ++m)
+                        if (attached[m].frame != attached[k].frame)
+                            for (const auto &other : attached[m].spheres)
+                                best = std::min(best, signedPairDistance(sphere.get(), other.get()));
+                }
+            return best;
+        }
+
         void requireFinite(const RobotModel &robot, const double *q, const char *who)
         {
             for (std::size_t i = 0; i < robot.dof(); ++i)
@@ -341,7 +464,7 @@ namespace ropras::ompl_ext
             std::lock_guard<std::mutex> lock(impl.mutex);
             const ObstacleScene &scene = impl.cache.get(env);
             impl.pose(robot, q);
-            return query(impl.body, scene);
+            return query(impl.body, scene, poseAttachments(robot, env, q));
         }
     }  // namespace
 
@@ -390,23 +513,30 @@ namespace ropras::ompl_ext
 
     bool FclSphereChecker::isValid(const Environment &env, const double *q) const
     {
-        return robot_->withinBounds(q) && posedQuery(*robot_, *impl_, env, q,
-                                                     [](const auto &body, const ObstacleScene &scene)
-                                                     { return body.firstCollision(scene).empty(); });
+        return robot_->withinBounds(q) &&
+               posedQuery(
+                   *robot_, *impl_, env, q,
+                   [](const auto &body, const ObstacleScene &scene, const auto &attached)
+                   { return body.firstCollision(scene).empty() && attachedCollision(body, scene, attached).empty(); });
     }
 
     double FclSphereChecker::distance(const Environment &env, const double *q) const
     {
         requireFinite(*robot_, q, "FclSphereChecker::distance");
         return posedQuery(*robot_, *impl_, env, q,
-                          [](const auto &body, const ObstacleScene &scene) { return body.signedDistance(scene); });
+                          [](const auto &body, const ObstacleScene &scene, const auto &attached)
+                          { return std::min(body.signedDistance(scene), attachedDistance(body, scene, attached)); });
     }
 
     std::string FclSphereChecker::describeCollision(const Environment &env, const double *q) const
     {
         requireFinite(*robot_, q, "FclSphereChecker::describeCollision");
         return posedQuery(*robot_, *impl_, env, q,
-                          [](const auto &body, const ObstacleScene &scene) { return body.firstCollision(scene); });
+                          [](const auto &body, const ObstacleScene &scene, const auto &attached)
+                          {
+                              const std::string robot = body.firstCollision(scene);
+                              return robot.empty() ? attachedCollision(body, scene, attached) : robot;
+                          });
     }
 
     // ---------------------------------------------------------------------------------------------------------
@@ -514,22 +644,29 @@ namespace ropras::ompl_ext
 
     bool FclMeshChecker::isValid(const Environment &env, const double *q) const
     {
-        return robot_->withinBounds(q) && posedQuery(*robot_, *impl_, env, q,
-                                                     [](const auto &body, const ObstacleScene &scene)
-                                                     { return body.firstCollision(scene).empty(); });
+        return robot_->withinBounds(q) &&
+               posedQuery(
+                   *robot_, *impl_, env, q,
+                   [](const auto &body, const ObstacleScene &scene, const auto &attached)
+                   { return body.firstCollision(scene).empty() && attachedCollision(body, scene, attached).empty(); });
     }
 
     double FclMeshChecker::distance(const Environment &env, const double *q) const
     {
         requireFinite(*robot_, q, "FclMeshChecker::distance");
         return posedQuery(*robot_, *impl_, env, q,
-                          [](const auto &body, const ObstacleScene &scene) { return body.signedDistance(scene); });
+                          [](const auto &body, const ObstacleScene &scene, const auto &attached)
+                          { return std::min(body.signedDistance(scene), attachedDistance(body, scene, attached)); });
     }
 
     std::string FclMeshChecker::describeCollision(const Environment &env, const double *q) const
     {
         requireFinite(*robot_, q, "FclMeshChecker::describeCollision");
         return posedQuery(*robot_, *impl_, env, q,
-                          [](const auto &body, const ObstacleScene &scene) { return body.firstCollision(scene); });
+                          [](const auto &body, const ObstacleScene &scene, const auto &attached)
+                          {
+                              const std::string robot = body.firstCollision(scene);
+                              return robot.empty() ? attachedCollision(body, scene, attached) : robot;
+                          });
     }
 }  // namespace ropras::ompl_ext

@@ -6,92 +6,12 @@
 #include <sstream>
 
 #include "ropras/core/Error.h"
+#include "scene/ShapeValidation.h"
 
 namespace ropras::ompl_ext
 {
     namespace
     {
-        const char *shapeTypeName(ShapeType type)
-        {
-            switch (type)
-            {
-                case ShapeType::Sphere:
-                    return "sphere";
-                case ShapeType::Box:
-                    return "box";
-                case ShapeType::Cylinder:
-                    return "cylinder";
-                case ShapeType::Capsule:
-                    return "capsule";
-                case ShapeType::PointCloud:
-                    return "point cloud";
-            }
-            return "unknown";
-        }
-
-        /// empty string when \a pose is a finite rigid transform, otherwise what is wrong with it
-        std::string poseProblem(const Eigen::Isometry3d &pose)
-        {
-            if (!pose.matrix().allFinite())
-                return "non-finite pose";
-            const Eigen::Matrix3d r = pose.linear();
-            if ((r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() > 1e-6 || r.determinant() < 0.0)
-                return "pose rotation is not a proper rotation (orthonormal, determinant +1)";
-            const Eigen::RowVector4d lastRow = pose.matrix().row(3);
-            if ((lastRow - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() > 0.0)
-                return "pose is not affine (last row must be 0 0 0 1)";
-            return {};
-        }
-
-        bool positiveFinite(double x)
-        {
-            return std::isfinite(x) && x > 0.0;
-        }
-
-        void validateShape(const std::string &object, std::size_t k, const Shape &shape)
-        {
-            std::ostringstream where;
-            where << "Environment: object '" << object << "' shape " << k << " (" << shapeTypeName(shape.type) << "): ";
-            const std::string poseError = poseProblem(shape.pose);
-            if (!poseError.empty())
-                throw Error(where.str() + poseError);
-            switch (shape.type)
-            {
-                case ShapeType::Sphere:
-                    if (!positiveFinite(shape.radius))
-                        throw Error(where.str() + "radius must be positive and finite, got " +
-                                    std::to_string(shape.radius));
-                    break;
-                case ShapeType::Box:
-                    for (int i = 0; i < 3; ++i)
-                        if (!positiveFinite(shape.extents[i]))
-                        {
-                            std::ostringstream msg;
-                            msg << where.str() << "extents must be positive and finite, got (" << shape.extents.x()
-                                << ", " << shape.extents.y() << ", " << shape.extents.z() << ")";
-                            throw Error(msg.str());
-                        }
-                    break;
-                case ShapeType::Cylinder:
-                    if (!positiveFinite(shape.radius) || !positiveFinite(shape.length))
-                        throw Error(where.str() + "radius and length must be positive and finite, got radius " +
-                                    std::to_string(shape.radius) + ", length " + std::to_string(shape.length));
-                    break;
-                case ShapeType::Capsule:
-                    if (!positiveFinite(shape.radius) || !std::isfinite(shape.length) || shape.length < 0.0)
-                        throw Error(where.str() +
-                                    "radius must be positive and length non-negative, both finite; got radius " +
-                                    std::to_string(shape.radius) + ", length " + std::to_string(shape.length));
-                    break;
-                case ShapeType::PointCloud:
-                    if (!shape.cloud)
-                        throw Error(where.str() + "no point cloud given (null pointer)");
-                    break;
-                default:
-                    throw Error(where.str() + "unknown shape type");
-            }
-        }
-
         /// signed distance from point p (primitive frame) to the primitive's surface, negative inside
         double primitiveDistance(const Shape &shape, const Eigen::Vector3d &p)
         {
@@ -123,70 +43,23 @@ namespace ropras::ompl_ext
         }
     }  // namespace
 
-    Shape Shape::sphere(double radius, const Eigen::Isometry3d &pose)
-    {
-        Shape s;
-        s.type = ShapeType::Sphere;
-        s.radius = radius;
-        s.pose = pose;
-        return s;
-    }
-
-    Shape Shape::box(const Eigen::Vector3d &fullExtents, const Eigen::Isometry3d &pose)
-    {
-        Shape s;
-        s.type = ShapeType::Box;
-        s.extents = fullExtents;
-        s.pose = pose;
-        return s;
-    }
-
-    Shape Shape::cylinder(double radius, double length, const Eigen::Isometry3d &pose)
-    {
-        Shape s;
-        s.type = ShapeType::Cylinder;
-        s.radius = radius;
-        s.length = length;
-        s.pose = pose;
-        return s;
-    }
-
-    Shape Shape::capsule(double radius, double length, const Eigen::Isometry3d &pose)
-    {
-        Shape s;
-        s.type = ShapeType::Capsule;
-        s.radius = radius;
-        s.length = length;
-        s.pose = pose;
-        return s;
-    }
-
-    Shape Shape::pointCloud(std::shared_ptr<const PointCloud> cloud, const Eigen::Isometry3d &pose)
-    {
-        Shape s;
-        s.type = ShapeType::PointCloud;
-        s.cloud = std::move(cloud);
-        s.pose = pose;
-        return s;
-    }
-
     int Environment::addObject(const std::string &name, std::vector<Shape> shapes, const Eigen::Isometry3d &pose)
     {
         if (name.empty())
             throw Error("Environment: an object needs a non-empty name");
-        if (hasObject(name))
+        if (nameInUse(name))
             throw Error("Environment: duplicate object name '" + name + "'");
         if (shapes.empty())
             throw Error("Environment: object '" + name + "' has no shapes");
-        const std::string poseError = poseProblem(pose);
+        const std::string poseError = detail::poseProblem(pose);
         if (!poseError.empty())
             throw Error("Environment: object '" + name + "': " + poseError);
         for (std::size_t k = 0; k < shapes.size(); ++k)
-            validateShape(name, k, shapes[k]);
+            detail::validateShape("Environment: object '" + name + "'", k, shapes[k]);
 
-        Object object;
+        auto def = std::make_shared<ObjectDefinition>();
+        ObjectDefinition &object = *def;
         object.name = name;
-        object.pose = pose;
         object.shapes = std::move(shapes);
         object.slots.reserve(object.shapes.size());
         for (const Shape &shape : object.shapes)
@@ -215,7 +88,7 @@ namespace ropras::ompl_ext
                     break;
             }
         }
-        objects_.push_back(std::move(object));
+        objects_.push_back({std::move(def), pose});
         writeQueryForm(objects_.back());
         return static_cast<int>(objects_.size()) - 1;
     }
@@ -254,9 +127,9 @@ namespace ropras::ompl_ext
             throw Error("Environment::setObjectPose: object id " + std::to_string(id) + " out of range (" +
                         std::to_string(objects_.size()) + " objects)");
         Object &object = objects_[static_cast<std::size_t>(id)];
-        const std::string poseError = poseProblem(pose);
+        const std::string poseError = detail::poseProblem(pose);
         if (!poseError.empty())
-            throw Error("Environment::setObjectPose: object '" + object.name + "': " + poseError);
+            throw Error("Environment::setObjectPose: object '" + object.def->name + "': " + poseError);
         object.pose = pose;
         writeQueryForm(object);
     }
@@ -272,17 +145,17 @@ namespace ropras::ompl_ext
     int Environment::objectId(const std::string &name) const
     {
         for (std::size_t i = 0; i < objects_.size(); ++i)
-            if (objects_[i].name == name)
+            if (objects_[i].def->name == name)
                 return static_cast<int>(i);
         std::string known;
         for (const Object &object : objects_)
-            known += (known.empty() ? "" : ", ") + object.name;
+            known += (known.empty() ? "" : ", ") + object.def->name;
         throw Error("Environment: unknown object '" + name + "' (objects: " + (known.empty() ? "none" : known) + ")");
     }
 
     bool Environment::hasObject(const std::string &name) const
     {
-        return std::any_of(objects_.begin(), objects_.end(), [&](const Object &o) { return o.name == name; });
+        return std::any_of(objects_.begin(), objects_.end(), [&](const Object &o) { return o.def->name == name; });
     }
 
     const std::string &Environment::objectName(int id) const
@@ -290,7 +163,7 @@ namespace ropras::ompl_ext
         if (id < 0 || static_cast<std::size_t>(id) >= objects_.size())
             throw Error("Environment::objectName: object id " + std::to_string(id) + " out of range (" +
                         std::to_string(objects_.size()) + " objects)");
-        return objects_[static_cast<std::size_t>(id)].name;
+        return objects_[static_cast<std::size_t>(id)].def->name;
     }
 
     const std::vector<Shape> &Environment::objectShapes(int id) const
@@ -298,11 +171,60 @@ namespace ropras::ompl_ext
         if (id < 0 || static_cast<std::size_t>(id) >= objects_.size())
             throw Error("Environment::objectShapes: object id " + std::to_string(id) + " out of range (" +
                         std::to_string(objects_.size()) + " objects)");
-        return objects_[static_cast<std::size_t>(id)].shapes;
+        return objects_[static_cast<std::size_t>(id)].def->shapes;
+    }
+
+    bool Environment::nameInUse(const std::string &name) const
+    {
+        return hasObject(name) || isAttached(name) || (base_ && base_->nameInUse(name));
+    }
+
+    Environment::Environment(std::shared_ptr<const Environment> base) : base_(std::move(base)) {}
+
+    int Environment::attach(std::shared_ptr<const RobotModel> robot, AttachedBody body,
+                            const SpherizerOptions &spherizer)
+    {
+        if (body.name.empty())
+            throw Error("Environment: an attached body needs a non-empty name");
+        if (nameInUse(body.name))
+            throw Error("Environment: cannot attach '" + body.name + "': the name is already used by an object or " +
+                        "an attached body");
+        auto query = std::make_shared<const AttachedSpheres>(compileAttachedBody(std::move(robot), body, spherizer));
+        attached_.push_back({std::make_shared<const AttachedBody>(std::move(body)), std::move(query)});
+        return static_cast<int>(attached_.size()) - 1;
+    }
+
+    void Environment::detach(const std::string &name)
+    {
+        for (std::size_t i = 0; i < attached_.size(); ++i)
+            if (attached_[i].body->name == name)
+            {
+                attached_.erase(attached_.begin() + static_cast<std::ptrdiff_t>(i));
+                return;
+            }
+        std::string known;
+        for (const Attached &a : attached_)
+            known += (known.empty() ? "" : ", ") + a.body->name;
+        throw Error("Environment::detach: no attached body '" + name +
+                    "' (attached: " + (known.empty() ? "none" : known) + ")");
+    }
+
+    const AttachedBody &Environment::attachedBody(std::size_t i) const
+    {
+        if (i >= attached_.size())
+            throw Error("Environment::attachedBody: index " + std::to_string(i) + " out of range (" +
+                        std::to_string(attached_.size()) + " attached bodies)");
+        return *attached_[i].body;
+    }
+
+    bool Environment::isAttached(const std::string &name) const
+    {
+        return std::any_of(attached_.begin(), attached_.end(), [&](const Attached &a) { return a.body->name == name; });
     }
 
     void Environment::clear()
     {
+        attached_.clear();
         objects_.clear();
         spheres_.clear();
         boxes_.clear();
@@ -315,7 +237,7 @@ namespace ropras::ompl_ext
     {
         const std::vector<Shape> &shapes = objectShapes(id);
         if (k >= shapes.size())
-            throw Error("Environment::shapeWorldPose: object '" + objects_[static_cast<std::size_t>(id)].name +
+            throw Error("Environment::shapeWorldPose: object '" + objects_[static_cast<std::size_t>(id)].def->name +
                         "' has " + std::to_string(shapes.size()) + " shapes, asked for shape " + std::to_string(k));
         return objects_[static_cast<std::size_t>(id)].pose * shapes[k].pose;
     }
@@ -365,13 +287,14 @@ namespace ropras::ompl_ext
 
     void Environment::writeQueryForm(const Object &object)
     {
-        for (std::size_t k = 0; k < object.shapes.size(); ++k)
+        const ObjectDefinition &def = *object.def;
+        for (std::size_t k = 0; k < def.shapes.size(); ++k)
         {
-            const Shape &shape = object.shapes[k];
+            const Shape &shape = def.shapes[k];
             const Eigen::Isometry3d world = object.pose * shape.pose;
             const Eigen::Vector3d c = world.translation();
             const Eigen::Matrix3d r = world.linear();
-            const auto slot = static_cast<std::size_t>(object.slots[k]);
+            const auto slot = static_cast<std::size_t>(def.slots[k]);
             switch (shape.type)
             {
                 case ShapeType::Sphere:
@@ -465,12 +388,14 @@ namespace ropras::ompl_ext
     {
         double best = std::numeric_limits<double>::infinity();
         for (const Object &object : objects_)
-            for (const Shape &shape : object.shapes)
+            for (const Shape &shape : object.def->shapes)
             {
                 const Eigen::Isometry3d world = object.pose * shape.pose;
                 const Eigen::Vector3d p = world.inverse(Eigen::Isometry) * center;
                 best = std::min(best, primitiveDistance(shape, p) - radius);
             }
+        if (base_)
+            best = std::min(best, base_->signedDistance(center, radius));
         return best;
     }
 }  // namespace ropras::ompl_ext

@@ -221,6 +221,29 @@ namespace ropras::ompl_ext
             return Shape::cylinder(d[1], d[0], pose);
         }
 
+        /// the primitives of a CollisionObject with their poses (in the object frame)
+        std::vector<Shape> readShapes(const Reader &reader, const YAML::Node &node, const std::string &at)
+        {
+            const YAML::Node primitives = reader.sequence(reader.child(node, "primitives", at), at + ".primitives");
+            const YAML::Node poses =
+                reader.sequence(reader.child(node, "primitive_poses", at), at + ".primitive_poses");
+            if (primitives.size() == 0)
+                reader.fail(primitives, at + ".primitives", "object has no primitives");
+            if (primitives.size() != poses.size())
+                reader.fail(poses, at + ".primitive_poses",
+                            std::to_string(primitives.size()) + " primitives but " + std::to_string(poses.size()) +
+                                " primitive_poses");
+            std::vector<Shape> shapes;
+            shapes.reserve(primitives.size());
+            for (std::size_t k = 0; k < primitives.size(); ++k)
+            {
+                const std::string index = "[" + std::to_string(k) + "]";
+                const Eigen::Isometry3d pose = reader.pose(poses[k], at + ".primitive_poses" + index);
+                shapes.push_back(readPrimitive(reader, primitives[k], pose, at + ".primitives" + index));
+            }
+            return shapes;
+        }
+
         void readCollisionObject(const Reader &reader, const YAML::Node &node, const std::string &where,
                                  std::set<std::string> &ids, Environment &env)
         {
@@ -254,24 +277,7 @@ namespace ropras::ompl_ext
             Eigen::Isometry3d objectPose = Eigen::Isometry3d::Identity();
             if (const YAML::Node p = node["pose"]; p.IsDefined() && !p.IsNull())
                 objectPose = reader.pose(p, at + ".pose");
-
-            const YAML::Node primitives = reader.sequence(reader.child(node, "primitives", at), at + ".primitives");
-            const YAML::Node poses =
-                reader.sequence(reader.child(node, "primitive_poses", at), at + ".primitive_poses");
-            if (primitives.size() == 0)
-                reader.fail(primitives, at + ".primitives", "object has no primitives");
-            if (primitives.size() != poses.size())
-                reader.fail(poses, at + ".primitive_poses",
-                            std::to_string(primitives.size()) + " primitives but " + std::to_string(poses.size()) +
-                                " primitive_poses");
-            std::vector<Shape> shapes;
-            shapes.reserve(primitives.size());
-            for (std::size_t k = 0; k < primitives.size(); ++k)
-            {
-                const std::string index = "[" + std::to_string(k) + "]";
-                const Eigen::Isometry3d pose = reader.pose(poses[k], at + ".primitive_poses" + index);
-                shapes.push_back(readPrimitive(reader, primitives[k], pose, at + ".primitives" + index));
-            }
+            std::vector<Shape> shapes = readShapes(reader, node, at);
             try
             {
                 env.addObject(id, std::move(shapes), objectPose);
@@ -282,7 +288,82 @@ namespace ropras::ompl_ext
             }
         }
 
-        Environment readScene(const Reader &reader, const YAML::Node &root)
+        /// robot_state.attached_collision_objects[i]: attached to the link, the object's pose in the link frame
+        void readAttachedObject(const Reader &reader, const YAML::Node &node, const std::string &where,
+                                std::set<std::string> &ids, const std::shared_ptr<const RobotModel> &robot,
+                                Environment &env)
+        {
+            if (!node.IsMap())
+                reader.fail(node, where, "expected an attached collision object (a mapping with link_name, object)");
+            const std::string link = reader.string(reader.child(node, "link_name", where), where + ".link_name");
+            const YAML::Node object = reader.child(node, "object", where);
+            if (!object.IsMap())
+                reader.fail(object, where + ".object", "expected a collision object (id, primitives, primitive_poses)");
+            const YAML::Node idNode = reader.child(object, "id", where + ".object");
+            const std::string id = reader.string(idNode, where + ".object.id");
+            if (id.empty())
+                reader.fail(idNode, where + ".object.id", "empty object id");
+            const std::string at = where + " '" + id + "'";
+            if (!ids.insert(id).second)
+                reader.fail(idNode, at, "duplicate object id '" + id + "'");
+            if (!robot)
+                reader.fail(node, at,
+                            "attached collision objects need the robot model (load the scene with the robot)");
+            if (const YAML::Node header = object["header"]; header.IsMap() && header["frame_id"].IsDefined())
+            {
+                const std::string frame = reader.string(header["frame_id"], at + ".object.header.frame_id");
+                if (!frame.empty() && frame != link)
+                    reader.fail(header["frame_id"], at + ".object.header.frame_id",
+                                "the object's pose must be given in its link's frame '" + link + "', got frame '" +
+                                    frame + "'");
+            }
+            for (const char *unsupported : {"meshes", "planes"})
+                if (nonEmpty(object[unsupported]))
+                    reader.fail(
+                        object[unsupported], at + ".object." + unsupported,
+                        std::string(unsupported) + " are not supported (box, sphere and cylinder primitives only)");
+            AttachedBody body;
+            body.name = id;
+            body.link = link;
+            if (const YAML::Node p = object["pose"]; p.IsDefined() && !p.IsNull())
+                body.pose = reader.pose(p, at + ".object.pose");
+            body.shapes = readShapes(reader, object, at + ".object");
+            if (const YAML::Node touch = node["touch_links"]; touch.IsDefined() && !touch.IsNull())
+            {
+                reader.sequence(touch, at + ".touch_links");
+                for (std::size_t k = 0; k < touch.size(); ++k)
+                    body.touchLinks.push_back(reader.string(touch[k], at + ".touch_links[" + std::to_string(k) + "]"));
+            }
+            try
+            {
+                env.attach(robot, std::move(body));
+            }
+            catch (const Error &e)
+            {
+                reader.fail(node, at, e.what());
+            }
+        }
+
+        void readAttachedObjects(const Reader &reader, const YAML::Node &root, std::set<std::string> &ids,
+                                 const std::shared_ptr<const RobotModel> &robot, Environment &env)
+        {
+            const YAML::Node state = root["robot_state"];
+            if (!state.IsDefined() || state.IsNull())
+                return;
+            if (!state.IsMap())
+                reader.fail(state, "robot_state", "expected a mapping");
+            const YAML::Node attached = state["attached_collision_objects"];
+            if (!attached.IsDefined() || attached.IsNull())
+                return;
+            reader.sequence(attached, "robot_state.attached_collision_objects");
+            for (std::size_t i = 0; i < attached.size(); ++i)
+                readAttachedObject(reader, attached[i],
+                                   "robot_state.attached_collision_objects[" + std::to_string(i) + "]", ids, robot,
+                                   env);
+        }
+
+        Environment readScene(const Reader &reader, const YAML::Node &root,
+                              const std::shared_ptr<const RobotModel> &robot)
         {
             if (!root.IsMap())
                 reader.fail(root, "document", "expected a MoveIt PlanningScene (a mapping with 'world')");
@@ -290,17 +371,21 @@ namespace ropras::ompl_ext
             if (!world.IsDefined())
                 reader.fail(root, "document", "no 'world' key: not a MoveIt PlanningScene");
             Environment env;
-            if (world.IsNull())
-                return env;
-            if (!world.IsMap())
-                reader.fail(world, "world", "expected a mapping with 'collision_objects'");
-            const YAML::Node objects = world["collision_objects"];
-            if (!objects.IsDefined() || objects.IsNull())
-                return env;
-            reader.sequence(objects, "world.collision_objects");
             std::set<std::string> ids;
-            for (std::size_t i = 0; i < objects.size(); ++i)
-                readCollisionObject(reader, objects[i], "world.collision_objects[" + std::to_string(i) + "]", ids, env);
+            if (!world.IsNull())
+            {
+                if (!world.IsMap())
+                    reader.fail(world, "world", "expected a mapping with 'collision_objects'");
+                const YAML::Node objects = world["collision_objects"];
+                if (objects.IsDefined() && !objects.IsNull())
+                {
+                    reader.sequence(objects, "world.collision_objects");
+                    for (std::size_t i = 0; i < objects.size(); ++i)
+                        readCollisionObject(reader, objects[i], "world.collision_objects[" + std::to_string(i) + "]",
+                                            ids, env);
+                }
+            }
+            readAttachedObjects(reader, root, ids, robot, env);
             return env;
         }
 
@@ -365,15 +450,26 @@ namespace ropras::ompl_ext
         }
     }  // namespace
 
-    Environment planningSceneFromString(const std::string &yaml, const std::string &sourceName)
+    Environment planningSceneFromString(const std::string &yaml, const std::string &sourceName,
+                                        std::shared_ptr<const RobotModel> robot)
     {
         const Reader reader(sourceName);
-        return readScene(reader, reader.parse(yaml));
+        return readScene(reader, reader.parse(yaml), robot);
+    }
+
+    Environment planningSceneFromString(const std::string &yaml, const std::string &sourceName)
+    {
+        return planningSceneFromString(yaml, sourceName, nullptr);
+    }
+
+    Environment loadPlanningScene(const std::string &path, std::shared_ptr<const RobotModel> robot)
+    {
+        return planningSceneFromString(readFile(path), path, std::move(robot));
     }
 
     Environment loadPlanningScene(const std::string &path)
     {
-        return planningSceneFromString(readFile(path), path);
+        return loadPlanningScene(path, nullptr);
     }
 
     MotionPlanRequest motionPlanRequestFromString(const std::string &yaml, const std::string &sourceName)

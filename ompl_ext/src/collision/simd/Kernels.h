@@ -223,6 +223,9 @@ namespace ropras::ompl_ext::simd
     }
 
     template <class V>
+    struct AttachedKernels;
+
+    template <class V>
     struct Kernels
     {
         using Mask = typename V::Mask;
@@ -445,20 +448,23 @@ namespace ropras::ompl_ext::simd
                         return true;
                 return false;
             };
-            if (anyHit(env.spheres()) || anyHit(env.boxes()) || anyHit(env.cylinders()) || anyHit(env.capsules()))
-                return true;
-            for (const CloudObstacle &o : env.clouds())
+            for (const Environment *e = &env; e != nullptr; e = e->base())  // the overlay, then its bases
             {
-                if (o.boundRadius < 0.0f)
-                    continue;
-                if (obstacleSingleCulled(p, buf, placed, box, o,
-                                         [&](const V &x, const V &y, const V &z, const V &r)
-                                         {
-                                             const unsigned cand =
-                                                 boundTest(x, y, z, r, o.cx, o.cy, o.cz, o.boundRadius).bits();
-                                             return cand != 0u ? hitCloud(x, y, z, r, o, cand) : 0u;
-                                         }))
+                if (anyHit(e->spheres()) || anyHit(e->boxes()) || anyHit(e->cylinders()) || anyHit(e->capsules()))
                     return true;
+                for (const CloudObstacle &o : e->clouds())
+                {
+                    if (o.boundRadius < 0.0f)
+                        continue;
+                    if (obstacleSingleCulled(p, buf, placed, box, o,
+                                             [&](const V &x, const V &y, const V &z, const V &r)
+                                             {
+                                                 const unsigned cand =
+                                                     boundTest(x, y, z, r, o.cx, o.cy, o.cz, o.boundRadius).bits();
+                                                 return cand != 0u ? hitCloud(x, y, z, r, o, cand) : 0u;
+                                             }))
+                        return true;
+                }
             }
             return false;
         }
@@ -574,7 +580,8 @@ namespace ropras::ompl_ext::simd
             if (p.links.size() > 64)
                 placeAll(p, buf, placed);
             const Aabb box = aabbSingle(p, groups);
-            return !envSingle(p, env, buf, placed, box) && !selfSingle(p, q, buf, placed, groups);
+            return !envSingle(p, env, buf, placed, box) && !selfSingle(p, q, buf, placed, groups) &&
+                   !(env.hasAttachedBodies() && AttachedKernels<V>::collideSingle(p, env, buf, placed));
         }
 
         // ------------------------------------------------------------ batch: one configuration per lane
@@ -1049,20 +1056,29 @@ namespace ropras::ompl_ext::simd
                         return true;
                 return false;
             };
-            if (sweep(env.spheres()) || sweep(env.boxes()) || sweep(env.cylinders()) || sweep(env.capsules()))
-                return hit;
-            for (const CloudObstacle &o : env.clouds())
+            for (const Environment *e = &env; e != nullptr; e = e->base())  // the overlay, then its bases
             {
-                const ObstacleBox ob = obstacleBox(o);
-                if (o.boundRadius < 0.0f)
-                    continue;
-                if (obstacle(ob,
-                             [&](const V &x, const V &y, const V &z, const V &r, unsigned cand)
-                             {
-                                 const unsigned near =
-                                     boundTest(x, y, z, r, o.cx, o.cy, o.cz, o.boundRadius).bits() & cand;
-                                 return near != 0u ? hitCloud(x, y, z, r, o, near) : 0u;
-                             }))
+                if (sweep(e->spheres()) || sweep(e->boxes()) || sweep(e->cylinders()) || sweep(e->capsules()))
+                    return hit;
+                for (const CloudObstacle &o : e->clouds())
+                {
+                    const ObstacleBox ob = obstacleBox(o);
+                    if (o.boundRadius < 0.0f)
+                        continue;
+                    if (obstacle(ob,
+                                 [&](const V &x, const V &y, const V &z, const V &r, unsigned cand)
+                                 {
+                                     const unsigned near =
+                                         boundTest(x, y, z, r, o.cx, o.cy, o.cz, o.boundRadius).bits() & cand;
+                                     return near != 0u ? hitCloud(x, y, z, r, o, near) : 0u;
+                                 }))
+                        return hit;
+                }
+            }
+            if (env.hasAttachedBodies())
+            {
+                hit |= AttachedKernels<V>::collideBatch(p, env, buf, placed, active & ~hit, stopOnAny);
+                if (done())
                     return hit;
             }
             hit |= selfBatch(p, buf, placed, groups, active & ~hit, stopOnAny);
@@ -1070,5 +1086,7 @@ namespace ropras::ompl_ext::simd
         }
     };
 }  // namespace ropras::ompl_ext::simd
+
+#include "AttachedKernels.h"
 
 #endif

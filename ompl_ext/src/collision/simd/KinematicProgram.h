@@ -59,6 +59,7 @@ namespace ropras::ompl_ext::simd
         int first{0};
         int count{0};
         int padded{0};
+        int collisionLink{-1};  ///< RobotModel::collisionLinks() index it belongs to
     };
 
     /// most link groups a program has (LinkGroup)
@@ -108,6 +109,8 @@ namespace ropras::ompl_ext::simd
 
     struct KinematicProgram
     {
+        /// the RobotModel compiled (attached bodies name their model; another model's are not ours to place)
+        const void *model{nullptr};
         int dof{0};
         std::vector<FrameOp> frames;
         std::vector<LinkOp> links;

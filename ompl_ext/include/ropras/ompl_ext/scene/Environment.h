@@ -6,43 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "ropras/ompl_ext/scene/AttachedBody.h"
 #include "ropras/ompl_ext/scene/PointCloud.h"
+#include "ropras/ompl_ext/scene/Shape.h"
 
 namespace ropras::ompl_ext
 {
-    /** \brief Kinds of obstacle primitives. */
-    enum class ShapeType
-    {
-        Sphere,
-        Box,
-        Cylinder,
-        Capsule,
-        PointCloud
-    };
-
-    /** \brief An obstacle primitive in its object's frame (the authoring form).
-        Sphere: radius. Box: full extents (x, y, z). Cylinder and capsule: radius and length along local z
-        (for a capsule the length is that of the segment between the two cap centres). */
-    struct Shape
-    {
-        ShapeType type{ShapeType::Sphere};
-        Eigen::Isometry3d pose{Eigen::Isometry3d::Identity()};  ///< primitive pose in the object frame
-        double radius{0.0};
-        double length{0.0};
-        Eigen::Vector3d extents{Eigen::Vector3d::Zero()};
-        std::shared_ptr<const PointCloud> cloud;  ///< for ShapeType::PointCloud
-
-        static Shape sphere(double radius, const Eigen::Isometry3d &pose = Eigen::Isometry3d::Identity());
-        static Shape box(const Eigen::Vector3d &fullExtents,
-                         const Eigen::Isometry3d &pose = Eigen::Isometry3d::Identity());
-        static Shape cylinder(double radius, double length,
-                              const Eigen::Isometry3d &pose = Eigen::Isometry3d::Identity());
-        static Shape capsule(double radius, double length,
-                             const Eigen::Isometry3d &pose = Eigen::Isometry3d::Identity());
-        static Shape pointCloud(std::shared_ptr<const PointCloud> cloud,
-                                const Eigen::Isometry3d &pose = Eigen::Isometry3d::Identity());
-    };
-
     // Query form: float, world frame, what the collision kernels read.
 
     /** \brief World axis-aligned box around a primitive (centre, half extents), enlarged by 1e-5 (relative) +
@@ -90,15 +59,36 @@ namespace ropras::ompl_ext
         ObstacleAabb aabb;
     };
 
-    /** \brief A set of named obstacles. Value type: copying is cheap (primitives are a few floats each,
-        point clouds are shared), and setObjectPose() moves one object in O(its primitives) — the POMDP
-        layer keeps one Environment per belief particle when obstacle poses are uncertain.
+    /** \brief A set of named obstacles, optionally over a shared base, with the bodies attached to the robot.
 
-        Errors (duplicate or unknown names, non-positive or non-finite sizes, non-finite poses) throw
-        ropras::Error naming the object. */
+        Value type: copying is cheap (primitives are a few floats each, point clouds and the base are shared), and
+        setObjectPose() moves one object in O(its primitives).
+
+        **Per-particle scenes.** An Environment made with a base (Environment(base)) checks the base's obstacles
+        too without copying them: the static scene is one shared, immutable Environment, and each belief particle
+        owns a small Environment over it holding only its movable objects (their poses differ per particle) and
+        its attached bodies (what the hand holds). Object names are unique across an Environment and its bases;
+        ids, objectCount() and the query form refer to this Environment's own objects (the base's are reached
+        through base()). Const use is thread-safe: several threads may check against one Environment, and
+        particles may share one base.
+
+        **Attached bodies** (attach(), detach()) move with a robot link; the collision checker of the same
+        RobotModel checks them in every path (see AttachedBody). A checker of another model ignores nothing: it
+        calls every configuration invalid while such bodies are attached, rather than guess their frames.
+
+        Errors (duplicate or unknown names, non-positive or non-finite sizes, non-finite poses, unknown links)
+        throw ropras::Error naming the object. */
     class Environment
     {
     public:
+        Environment() = default;
+        /// an overlay: \a base's obstacles and attached bodies are part of this Environment (null: none)
+        explicit Environment(std::shared_ptr<const Environment> base);
+
+        /// the shared base, or nullptr
+        const Environment *base() const { return base_.get(); }
+        const std::shared_ptr<const Environment> &basePtr() const { return base_; }
+
         /// adds an object made of \a shapes at \a pose; returns its id (ids are dense, from 0)
         int addObject(const std::string &name, std::vector<Shape> shapes,
                       const Eigen::Isometry3d &pose = Eigen::Isometry3d::Identity());
@@ -116,10 +106,14 @@ namespace ropras::ompl_ext
         }
         const Eigen::Isometry3d &objectPose(int id) const;
         int objectId(const std::string &name) const;  ///< throws Error listing the object names if unknown
+        /// an object of this Environment (not of its base)
         bool hasObject(const std::string &name) const;
+        /// an object or attached body of this Environment or of a base has this name
+        bool nameInUse(const std::string &name) const;
         std::size_t objectCount() const { return objects_.size(); }
         const std::string &objectName(int id) const;
         const std::vector<Shape> &objectShapes(int id) const;
+        /// removes this Environment's objects and attached bodies (the base stays)
         void clear();
 
         /// world pose of primitive \a k of object \a id
@@ -132,17 +126,45 @@ namespace ropras::ompl_ext
         const std::vector<CapsuleObstacle> &capsules() const { return capsules_; }
         const std::vector<CloudObstacle> &clouds() const { return clouds_; }
 
-        /// exact signed distance (double) from a sphere to the nearest obstacle surface: negative when
-        /// penetrating, +infinity for an empty environment. Reference computation for tests and tools.
+        /** \brief Attaches \a body to a link of \a robot (see AttachedBody; non-sphere geometry is spherized with
+            \a spherizer); returns its index (attachedBody(i)). The name must be unique among objects and attached
+            bodies. Throws Error naming the body for an unknown link or touch link, a bad pose or shape. */
+        int attach(std::shared_ptr<const RobotModel> robot, AttachedBody body,
+                   const SpherizerOptions &spherizer = SpherizerOptions());
+        /// removes the attached body \a name (of this Environment, not of its base); throws Error if unknown
+        void detach(const std::string &name);
+        bool isAttached(const std::string &name) const;
+        /// this Environment's attached bodies (not its base's); copies of an Environment share them
+        std::size_t attachedCount() const { return attached_.size(); }
+        /// attached body \a i in authoring form; throws Error if out of range
+        const AttachedBody &attachedBody(std::size_t i) const;
+        /// its query form (what the kernels read), i < attachedCount()
+        const AttachedSpheres &attachedSpheres(std::size_t i) const noexcept { return *attached_[i].spheres; }
+        /// true when this Environment or a base has attached bodies
+        bool hasAttachedBodies() const { return !attached_.empty() || (base_ && base_->hasAttachedBodies()); }
+
+        /// exact signed distance (double) from a sphere to the nearest obstacle surface (the base's included):
+        /// negative when penetrating, +infinity for an empty environment. Reference computation for tests and tools.
         double signedDistance(const Eigen::Vector3d &center, double radius) const;
 
     private:
-        struct Object
+        /// what never changes about an object: shared by the copies of an Environment (a particle's copy costs
+        /// a pointer per object, not its name and shapes)
+        struct ObjectDefinition
         {
             std::string name;
-            Eigen::Isometry3d pose;
             std::vector<Shape> shapes;
             std::vector<int> slots;  ///< per shape: index into the query vector of its type
+        };
+        struct Object
+        {
+            std::shared_ptr<const ObjectDefinition> def;
+            Eigen::Isometry3d pose;
+        };
+        struct Attached
+        {
+            std::shared_ptr<const AttachedBody> body;
+            std::shared_ptr<const AttachedSpheres> spheres;
         };
         void writeQueryForm(const Object &object);
         std::vector<Object> objects_;
@@ -151,6 +173,8 @@ namespace ropras::ompl_ext
         std::vector<CylinderObstacle> cylinders_;
         std::vector<CapsuleObstacle> capsules_;
         std::vector<CloudObstacle> clouds_;
+        std::shared_ptr<const Environment> base_;
+        std::vector<Attached> attached_;
     };
 }  // namespace ropras::ompl_ext
 

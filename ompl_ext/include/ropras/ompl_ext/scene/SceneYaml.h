@@ -2,9 +2,11 @@
 #define ROPRAS_OMPL_EXT_SCENE_YAML_H
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "ropras/ompl_ext/model/RobotModel.h"
 #include "ropras/ompl_ext/scene/Environment.h"
 
 namespace ropras::ompl_ext
@@ -14,6 +16,14 @@ namespace ropras::ompl_ext
         full extents, cylinder [length, radius]). Throws ropras::Error naming the file and the entry. */
     Environment loadPlanningScene(const std::string &path);
     Environment planningSceneFromString(const std::string &yaml, const std::string &sourceName);
+
+    /** \brief The same, with `robot_state.attached_collision_objects` (MoveIt AttachedCollisionObject: link_name,
+        object with id, primitives, primitive_poses and a pose in the link frame, touch_links) attached to
+        \a robot. The object's header.frame_id must be empty or the link itself. Without a robot (the overloads
+        above) a scene with attached objects is an error naming the file and line. */
+    Environment loadPlanningScene(const std::string &path, std::shared_ptr<const RobotModel> robot);
+    Environment planningSceneFromString(const std::string &yaml, const std::string &sourceName,
+                                        std::shared_ptr<const RobotModel> robot);
 
     /** \brief A MoveIt MotionPlanRequest: start joint state and the first goal's joint constraints. */
     struct MotionPlanRequest
