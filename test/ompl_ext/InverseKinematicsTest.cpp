@@ -3,6 +3,8 @@
 // (collision-free in a scene), and the errors of bad targets and options.
 #include <gtest/gtest.h>
 
+#define ROPRAS_ALLOCATION_COUNTER_ONLY  // the counting operator new is defined in VectorizedRRTConnectAllocationTest
+#include "../AllocationCounter.h"
 #include "ExpectError.h"
 #include "KinematicsTestRobots.h"
 #include "ropras/ompl_ext/collision/CollisionChecker.h"
@@ -256,4 +258,40 @@ TEST(InverseKinematics, BadInputIsAnErrorNamingTheValue)
     options.maxIterations = 0;
     test::expectErrorMentions([&] { ik.solve(target, robot->defaultConfiguration(), rng, q, options); },
                               {"maxIterations"});
+}
+
+TEST(InverseKinematics, SolveAndChainDoNotAllocate)
+{
+    const auto robot = RobotModel::fromUrdfFile(test::shippedArmUrdf());
+    const InverseKinematics ik(robot, "tcp");
+    const KinematicChain &chain = ik.chain();
+    IkWorkspace ws = ik.makeWorkspace();
+    ChainWorkspace cws = chain.makeWorkspace();
+    IkOptions options;
+    options.timeLimit = 1.0;
+    core::Rng goals(3), rng(4);
+    std::vector<std::vector<double>> goalConfigurations;
+    for (int k = 0; k < 20; ++k)
+        goalConfigurations.push_back(randomConfiguration(*robot, goals));
+    const std::vector<double> seed = robot->defaultConfiguration();
+    std::vector<double> q(robot->dof()), batch(12 * 5), qs;
+    for (int k = 0; k < 5; ++k)
+        qs.insert(qs.end(), goalConfigurations[k].begin(), goalConfigurations[k].end());
+    const ConfigurationPredicate pickFirstJointPositive = [](const double *c) { return c[0] > 0.0; };
+    int solved = 0;
+    const std::size_t before = test::allocationCount.load();
+    for (const std::vector<double> &goal : goalConfigurations)
+    {
+        const Eigen::Isometry3d t = chain.tipPose(goal.data());
+        chain.jacobian(goal.data(), cws);
+        chain.tipPosesBatch(qs.data(), 5, batch.data());
+        for (const IkTarget &target : {IkTarget::position(t.translation()),
+                                       IkTarget::positionAxis(t.translation(), t.linear().col(2)), IkTarget::pose(t)})
+        {
+            const IkResult r = ik.solve(target, seed.data(), rng, ws, q.data(), options, &pickFirstJointPositive);
+            solved += r.status == IkStatus::Solved ? 1 : 0;
+        }
+    }
+    EXPECT_EQ(test::allocationCount.load(), before);
+    EXPECT_GT(solved, 50);  // the calls did real work (the predicate rejects about half the solutions)
 }
