@@ -123,6 +123,7 @@ namespace
     {
         std::vector<double> us;
         std::size_t solved{0}, attempts{0}, iterations{0};
+        std::size_t timedOut{0};  ///< ours: solves the time limit ended
     };
 
     /// within the tolerances by the reference FK, and within the joint limits
@@ -198,6 +199,7 @@ namespace
                 ours.us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - t0).count());
                 ours.attempts += r.attempts;
                 ours.iterations += r.iterations;
+                ours.timedOut += r.status == IkStatus::TimedOut ? 1 : 0;
                 ours.solved += r.status == IkStatus::Solved && verified(*robot, tip, target, q, a) ? 1 : 0;
             };
             auto runKdl = [&]
@@ -260,6 +262,7 @@ namespace
         };
         row("ropras", ours, true);
         row(kdl.name(), theirs, false);  // KDL does not report its iterations
+        std::cout << "ropras: " << a.poses - ours.solved << " unsolved, " << ours.timedOut << " of them timed out\n";
         if (!a.json.empty())
         {
             nlohmann::json j;
@@ -281,6 +284,7 @@ namespace
             j["ropras_attempts_per_solve"] = static_cast<double>(ours.attempts) / total;
             j["kdl_attempts_per_solve"] = static_cast<double>(theirs.attempts) / total;
             j["ropras_iterations_per_solve"] = static_cast<double>(ours.iterations) / total;
+            j["ropras_timed_out"] = static_cast<double>(ours.timedOut) / total;
             std::ofstream file(a.json);
             if (!file)
                 throw Error("bench-ik: cannot write '" + a.json + "'");
