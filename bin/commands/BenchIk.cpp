@@ -119,6 +119,32 @@ namespace
         std::unique_ptr<KDL::ChainIkSolverPos_LMA> lma_;
     };
 
+    /// ns per configuration of the chain's single-configuration FK and of its batch FK (blocks of 4), over the
+    /// same configurations, alternating 5 times; medians
+    std::pair<double, double> timeLinkPoses(const KinematicChain &chain, const std::vector<double> &qs)
+    {
+        const std::size_t dof = chain.robot().dof(), count = qs.size() / dof;
+        std::vector<double> out(12 * count);
+        std::vector<double> single, batch;
+        double sink = 0.0;
+        for (int rep = 0; rep < 5; ++rep)
+        {
+            auto t0 = Clock::now();
+            for (std::size_t k = 0; k < count; ++k)
+                sink += chain.tipPose(qs.data() + k * dof).translation().x();
+            single.push_back(std::chrono::duration<double, std::nano>(Clock::now() - t0).count() /
+                             static_cast<double>(count));
+            t0 = Clock::now();
+            chain.tipPosesBatch(qs.data(), count, out.data());
+            sink += out[9];
+            batch.push_back(std::chrono::duration<double, std::nano>(Clock::now() - t0).count() /
+                            static_cast<double>(count));
+        }
+        if (sink == 1e300)
+            std::cout << ' ';  // keeps the work observable
+        return {median(single), median(batch)};
+    }
+
     struct Tally
     {
         std::vector<double> us;
@@ -243,6 +269,12 @@ namespace
             }
         }
 
+        std::vector<double> fkConfigurations;
+        for (std::size_t k = 0; k < 4096; ++k)
+            for (std::size_t i = 0; i < dof; ++i)
+                fkConfigurations.push_back(targets.uniform(robot->joints()[i].lower, robot->joints()[i].upper));
+        const auto [fkSingle, fkBatch] = timeLinkPoses(chain, fkConfigurations);
+
         const double total = static_cast<double>(a.poses);
         std::cout << "robot " << robot->name() << ", chain " << robot->links().front().name << " -> " << a.tip << " ("
                   << n << " joints), target " << a.target << ", " << a.poses << " reachable random targets (seed "
@@ -263,6 +295,8 @@ namespace
         row("ropras", ours, true);
         row(kdl.name(), theirs, false);  // KDL does not report its iterations
         std::cout << "ropras: " << a.poses - ours.solved << " unsolved, " << ours.timedOut << " of them timed out\n";
+        std::cout << "tip pose (FK), ns per configuration: single " << std::setprecision(1) << fkSingle
+                  << ", batch of 4 " << fkBatch << '\n';
         if (!a.json.empty())
         {
             nlohmann::json j;
@@ -285,6 +319,8 @@ namespace
             j["kdl_attempts_per_solve"] = static_cast<double>(theirs.attempts) / total;
             j["ropras_iterations_per_solve"] = static_cast<double>(ours.iterations) / total;
             j["ropras_timed_out"] = static_cast<double>(ours.timedOut) / total;
+            j["fk_single_ns"] = fkSingle;
+            j["fk_batch_ns"] = fkBatch;
             std::ofstream file(a.json);
             if (!file)
                 throw Error("bench-ik: cannot write '" + a.json + "'");
