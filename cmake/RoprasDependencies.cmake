@@ -11,6 +11,12 @@ find_package(CLI11 REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(Bullet REQUIRED)  # CMake's FindBullet module (float build)
 find_package(Threads REQUIRED)
+# Orocos KDL + kdl_parser: only `ropras bench-ik` and the tests use them (the comparison with our IK); no library
+# links them and no public header includes them. kdl_parser's CMake config is catkin's and pulls in ROS/ament
+# modules, so its header and library are found directly.
+find_package(orocos_kdl 1.4 REQUIRED)
+find_path(ROPRAS_KDL_PARSER_INCLUDE_DIR kdl_parser/kdl_parser.hpp REQUIRED)
+find_library(ROPRAS_KDL_PARSER_LIBRARY kdl_parser REQUIRED)
 
 # OMPL 1.5 defines variables only; link libompl.so alone (its list names boost libraries we do not need).
 list(GET OMPL_LIBRARIES 0 ROPRAS_OMPL_CORE_LIB)
@@ -25,3 +31,7 @@ target_include_directories(ropras_bullet_iface SYSTEM INTERFACE ${BULLET_INCLUDE
 target_link_libraries(ropras_bullet_iface INTERFACE ${BULLET_LIBRARIES})
 set_target_properties(ropras_bullet_iface PROPERTIES EXPORT_NAME bullet_iface)
 install(TARGETS ropras_bullet_iface EXPORT roprasTargets)
+
+add_library(ropras_kdl_iface INTERFACE)
+target_include_directories(ropras_kdl_iface SYSTEM INTERFACE ${orocos_kdl_INCLUDE_DIRS} ${ROPRAS_KDL_PARSER_INCLUDE_DIR})
+target_link_libraries(ropras_kdl_iface INTERFACE ${ROPRAS_KDL_PARSER_LIBRARY} ${orocos_kdl_LIBRARIES} Eigen3::Eigen)

@@ -7,6 +7,7 @@ packages=(
   libompl-dev libfcl-dev liburdfdom-dev libtinyxml2-dev libassimp-dev libbullet-dev libeigen3-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
+  liborocos-kdl-dev libkdl-parser-dev  # only for `ropras bench-ik` and the tests (the KDL comparison)
 )
 missing=()
 for p in "${packages[@]}"; do

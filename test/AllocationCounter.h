@@ -2,7 +2,8 @@
 #define ROPRAS_TEST_ALLOCATION_COUNTER_H
 
 // Replaces the global operator new / delete of a test executable with counting versions. Include it in exactly
-// ONE source file per test executable (the definitions are not inline: replacement functions must not be).
+// ONE source file per test executable (the definitions are not inline: replacement functions must not be); other
+// files of the same executable define ROPRAS_ALLOCATION_COUNTER_ONLY first and get the counter alone.
 
 #include <atomic>
 #include <cstdlib>
@@ -16,6 +17,7 @@ namespace ropras::test
 
 // None of the replacements is inlined: GCC 12 would otherwise pair malloc with operator delete and warn
 // (-Wmismatched-new-delete).
+#ifndef ROPRAS_ALLOCATION_COUNTER_ONLY
 [[gnu::noinline]] void *operator new(std::size_t size)
 {
     ropras::test::allocationCount.fetch_add(1, std::memory_order_relaxed);
@@ -35,5 +37,6 @@ namespace ropras::test
 {
     std::free(p);
 }
+#endif
 
 #endif

@@ -14,6 +14,7 @@
 
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
+#include "Median.h"
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/collision/CollisionChecker.h"
 #include "ropras/ompl_ext/collision/FclReferenceChecker.h"
@@ -24,6 +25,7 @@ namespace
     using namespace ropras;
     using namespace ropras::ompl_ext;
     using Clock = std::chrono::steady_clock;
+    using ropras::bin::median;
 
     struct BenchArgs
     {
@@ -37,15 +39,6 @@ namespace
         double resolution{1.0 / 32.0};
         unsigned seed{1};
     };
-
-    double median(std::vector<double> v)
-    {
-        if (v.empty())
-            return std::numeric_limits<double>::quiet_NaN();
-        std::sort(v.begin(), v.end());
-        const std::size_t n = v.size();
-        return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-    }
 
     /// wall clock (steady_clock) or this thread's CPU time (excludes time the thread waits for a core)
     bool useCpuClock = false;
