@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "ExpectError.h"
+#include "MeshSurfaceSampling.h"
 
 #include <cmath>
 #include <filesystem>
@@ -23,20 +24,11 @@ namespace
     using ropras::ompl_ext::SpherizerOptions;
     using ropras::ompl_ext::TriangleMesh;
     namespace spherizer = ropras::ompl_ext::spherizer;
+    using ropras::test::sampleMeshSurface;
+    using ropras::test::uncovered;
 
     const std::string SHARED = ROPRAS_SHARED_DIR;
     constexpr double PI = 3.14159265358979323846;
-
-    /// how far \a p lies outside every sphere (<= 0: covered)
-    double uncovered(const std::vector<Sphere> &spheres, const Eigen::Vector3d &p)
-    {
-        double best = std::numeric_limits<double>::infinity();
-        for (const Sphere &s : spheres)
-        {
-            best = std::min(best, (p - s.center).norm() - s.radius);
-        }
-        return best;
-    }
 
     /// Fibonacci points on a sphere's surface
     std::vector<Eigen::Vector3d> sphereSurface(const Sphere &s, int n)
@@ -110,38 +102,6 @@ namespace
                 std::min(best, (closestOnTriangle(p, m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]) - p).norm());
         }
         return std::abs(winding) / (4.0 * PI) > 0.5 ? 0.0 : best;
-    }
-
-    std::vector<Eigen::Vector3d> sampleMeshSurface(const TriangleMesh &m, int n, unsigned seed)
-    {
-        std::vector<double> area;
-        for (const auto &t : m.triangles)
-        {
-            area.push_back(
-                0.5 * (m.vertices[t[1]] - m.vertices[t[0]]).cross(m.vertices[t[2]] - m.vertices[t[0]]).norm() + 1e-15);
-        }
-        std::mt19937 rng(seed);
-        std::discrete_distribution<int> pick(area.begin(), area.end());
-        std::uniform_real_distribution<double> u(0.0, 1.0);
-        std::vector<Eigen::Vector3d> out;
-        for (int i = 0; i < n; ++i)
-        {
-            const auto &t = m.triangles[pick(rng)];
-            double a = u(rng), b = u(rng);
-            if (a + b > 1.0)
-            {
-                a = 1.0 - a;
-                b = 1.0 - b;
-            }
-            out.push_back(m.vertices[t[0]] + a * (m.vertices[t[1]] - m.vertices[t[0]]) +
-                          b * (m.vertices[t[2]] - m.vertices[t[0]]));
-        }
-        // the vertices themselves (corners are the hardest points to cover)
-        for (const auto &v : m.vertices)
-        {
-            out.push_back(v);
-        }
-        return out;
     }
 
     TriangleMesh torus(double big, double small, int nu, int nv)
