@@ -9,26 +9,26 @@
 
 namespace ropras::ompl_ext
 {
+    const char *shapeTypeName(ShapeType type) noexcept
+    {
+        switch (type)
+        {
+            case ShapeType::Sphere:
+                return "sphere";
+            case ShapeType::Box:
+                return "box";
+            case ShapeType::Cylinder:
+                return "cylinder";
+            case ShapeType::Capsule:
+                return "capsule";
+            case ShapeType::PointCloud:
+                return "point cloud";
+        }
+        return "unknown";
+    }
+
     namespace
     {
-        const char *shapeTypeName(ShapeType type)
-        {
-            switch (type)
-            {
-                case ShapeType::Sphere:
-                    return "sphere";
-                case ShapeType::Box:
-                    return "box";
-                case ShapeType::Cylinder:
-                    return "cylinder";
-                case ShapeType::Capsule:
-                    return "capsule";
-                case ShapeType::PointCloud:
-                    return "point cloud";
-            }
-            return "unknown";
-        }
-
         /// empty string when \a pose is a finite rigid transform, otherwise what is wrong with it
         std::string poseProblem(const Eigen::Isometry3d &pose)
         {
@@ -189,8 +189,10 @@ namespace ropras::ompl_ext
         object.pose = pose;
         object.shapes = std::move(shapes);
         object.slots.reserve(object.shapes.size());
+        const int id = static_cast<int>(objects_.size());
         for (const Shape &shape : object.shapes)
         {
+            owners_[static_cast<std::size_t>(shape.type)].push_back(id);
             switch (shape.type)
             {
                 case ShapeType::Sphere:
@@ -217,7 +219,7 @@ namespace ropras::ompl_ext
         }
         objects_.push_back(std::move(object));
         writeQueryForm(objects_.back());
-        return static_cast<int>(objects_.size()) - 1;
+        return id;
     }
 
     int Environment::addSphere(const std::string &name, const Eigen::Vector3d &center, double radius)
@@ -309,6 +311,8 @@ namespace ropras::ompl_ext
         cylinders_.clear();
         capsules_.clear();
         clouds_.clear();
+        for (std::vector<int> &owners : owners_)
+            owners.clear();
     }
 
     Eigen::Isometry3d Environment::shapeWorldPose(int id, std::size_t k) const
@@ -464,13 +468,22 @@ namespace ropras::ompl_ext
     double Environment::signedDistance(const Eigen::Vector3d &center, double radius) const
     {
         double best = std::numeric_limits<double>::infinity();
-        for (const Object &object : objects_)
-            for (const Shape &shape : object.shapes)
-            {
-                const Eigen::Isometry3d world = object.pose * shape.pose;
-                const Eigen::Vector3d p = world.inverse(Eigen::Isometry) * center;
-                best = std::min(best, primitiveDistance(shape, p) - radius);
-            }
+        for (std::size_t id = 0; id < objects_.size(); ++id)
+            best = std::min(best, objectSignedDistance(static_cast<int>(id), center, radius));
+        return best;
+    }
+
+    double Environment::objectSignedDistance(int id, const Eigen::Vector3d &center, double radius) const
+    {
+        const std::vector<Shape> &shapes = objectShapes(id);
+        const Eigen::Isometry3d &pose = objects_[static_cast<std::size_t>(id)].pose;
+        double best = std::numeric_limits<double>::infinity();
+        for (const Shape &shape : shapes)
+        {
+            const Eigen::Isometry3d world = pose * shape.pose;
+            const Eigen::Vector3d p = world.inverse(Eigen::Isometry) * center;
+            best = std::min(best, primitiveDistance(shape, p) - radius);
+        }
         return best;
     }
 }  // namespace ropras::ompl_ext

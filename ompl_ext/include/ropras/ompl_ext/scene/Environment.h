@@ -19,6 +19,8 @@ namespace ropras::ompl_ext
         Capsule,
         PointCloud
     };
+    /// "sphere", "box", "cylinder", "capsule", "point cloud"
+    const char *shapeTypeName(ShapeType type) noexcept;
 
     /** \brief An obstacle primitive in its object's frame (the authoring form).
         Sphere: radius. Box: full extents (x, y, z). Cylinder and capsule: radius and length along local z
@@ -131,10 +133,17 @@ namespace ropras::ompl_ext
         const std::vector<CylinderObstacle> &cylinders() const { return cylinders_; }
         const std::vector<CapsuleObstacle> &capsules() const { return capsules_; }
         const std::vector<CloudObstacle> &clouds() const { return clouds_; }
+        /// the object id owning each entry of the query vector of \a type (indexed like spheres(), boxes(), ...)
+        const std::vector<int> &primitiveObjects(ShapeType type) const
+        {
+            return owners_[static_cast<std::size_t>(type)];
+        }
 
         /// exact signed distance (double) from a sphere to the nearest obstacle surface: negative when
         /// penetrating, +infinity for an empty environment. Reference computation for tests and tools.
         double signedDistance(const Eigen::Vector3d &center, double radius) const;
+        /// the same for the primitives of object \a id alone (throws Error for an unknown id)
+        double objectSignedDistance(int id, const Eigen::Vector3d &center, double radius) const;
 
     private:
         struct Object
@@ -151,6 +160,7 @@ namespace ropras::ompl_ext
         std::vector<CylinderObstacle> cylinders_;
         std::vector<CapsuleObstacle> capsules_;
         std::vector<CloudObstacle> clouds_;
+        std::vector<int> owners_[5];  ///< per ShapeType: object id of each query-form entry
     };
 }  // namespace ropras::ompl_ext
 
