@@ -1,7 +1,5 @@
 // `ropras bench-collision`: speed of the SIMD kinematics and collision kernels on MoveIt scenes (FK, batch,
 // single configuration, motions), next to FCL with the same spheres and FCL with the URDF meshes.
-#include <time.h>
-
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
@@ -13,6 +11,7 @@
 #include <random>
 
 #include "ArgumentChecks.h"
+#include "BenchClock.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/collision/CollisionChecker.h"
@@ -23,7 +22,6 @@ namespace
 {
     using namespace ropras;
     using namespace ropras::ompl_ext;
-    using Clock = std::chrono::steady_clock;
 
     struct BenchArgs
     {
@@ -38,27 +36,14 @@ namespace
         unsigned seed{1};
     };
 
-    double median(std::vector<double> v)
-    {
-        if (v.empty())
-            return std::numeric_limits<double>::quiet_NaN();
-        std::sort(v.begin(), v.end());
-        const std::size_t n = v.size();
-        return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-    }
+    using ropras::bin::median;
 
-    /// wall clock (steady_clock) or this thread's CPU time (excludes time the thread waits for a core)
-    bool useCpuClock = false;
+    /// the clock run() chose (--clock)
+    std::optional<ropras::bin::BenchClock> benchClock;
 
     double nowNs()
     {
-        if (useCpuClock)
-        {
-            timespec t{};
-            clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-            return 1e9 * static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec);
-        }
-        return std::chrono::duration<double, std::nano>(Clock::now().time_since_epoch()).count();
+        return benchClock->nowNs();
     }
 
     /// nanoseconds per item of \a body(), which processes \a items items
@@ -95,9 +80,7 @@ namespace
 
     int run(const BenchArgs &a)
     {
-        if (a.clock != "wall" && a.clock != "cpu")
-            throw Error("bench-collision: unknown --clock '" + a.clock + "' (wall, cpu)");
-        useCpuClock = a.clock == "cpu";
+        benchClock.emplace(a.clock, "bench-collision");
         const auto robot = RobotModel::fromUrdfFile(a.urdf, a.srdf);
         const CollisionChecker checker(robot, parseBackend(a.backend));
         const std::size_t dof = robot->dof();
