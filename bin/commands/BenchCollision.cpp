@@ -1,7 +1,5 @@
 // `ropras bench-collision`: speed of the SIMD kinematics and collision kernels on MoveIt scenes (FK, batch,
 // single configuration, motions), next to FCL with the same spheres and FCL with the URDF meshes.
-#include <time.h>
-
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
@@ -13,6 +11,7 @@
 #include <random>
 
 #include "ArgumentChecks.h"
+#include "BenchClock.h"
 #include "CommandRegistry.h"
 #include "Median.h"
 #include "ropras/core/Error.h"
@@ -24,8 +23,6 @@ namespace
 {
     using namespace ropras;
     using namespace ropras::ompl_ext;
-    using Clock = std::chrono::steady_clock;
-    using ropras::bin::median;
 
     struct BenchArgs
     {
@@ -40,18 +37,14 @@ namespace
         unsigned seed{1};
     };
 
-    /// wall clock (steady_clock) or this thread's CPU time (excludes time the thread waits for a core)
-    bool useCpuClock = false;
+    using ropras::bin::median;
+
+    /// the clock run() chose (--clock)
+    std::optional<ropras::bin::BenchClock> benchClock;
 
     double nowNs()
     {
-        if (useCpuClock)
-        {
-            timespec t{};
-            clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-            return 1e9 * static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec);
-        }
-        return std::chrono::duration<double, std::nano>(Clock::now().time_since_epoch()).count();
+        return benchClock->nowNs();
     }
 
     /// nanoseconds per item of \a body(), which processes \a items items
@@ -128,9 +121,7 @@ namespace
 
     int run(const BenchArgs &a)
     {
-        if (a.clock != "wall" && a.clock != "cpu")
-            throw Error("bench-collision: unknown --clock '" + a.clock + "' (wall, cpu)");
-        useCpuClock = a.clock == "cpu";
+        benchClock.emplace(a.clock, "bench-collision");
         const auto robot = RobotModel::fromUrdfFile(a.urdf, a.srdf);
         const CollisionChecker checker(robot, parseBackend(a.backend));
         const std::size_t dof = robot->dof();

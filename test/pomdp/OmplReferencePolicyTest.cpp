@@ -86,34 +86,6 @@ namespace ropras::pomdp::test
         const auto *const QUIET = ::testing::AddGlobalTestEnvironment(new QuietOmpl);
     }  // namespace
 
-    TEST(DiscretizeJointPath, PiecesAtMostOneStepAndEveryCorner)
-    {
-        const std::vector<double> path{0.0, 0.0, 0.3, 0.0, 0.3, 0.4, 0.3, 0.4};  // 0.3, 0.4, then zero length
-        std::vector<double> points;
-        ASSERT_EQ(discretizeJointPath(path.data(), 4, 2, 0.1, 0, points), 7u);
-        const std::vector<double> expected{0.1, 0.0, 0.2, 0.0, 0.3, 0.0, 0.3, 0.1, 0.3, 0.2, 0.3, 0.3, 0.3, 0.4};
-        ASSERT_EQ(points.size(), expected.size());
-        for (std::size_t i = 0; i < expected.size(); ++i)
-            EXPECT_NEAR(points[i], expected[i], 1e-12) << i;
-        // step 0.25: 0.3 -> 2 pieces of 0.15, 0.4 -> 2 pieces of 0.2; the corner (0.3, 0) is kept
-        points.clear();
-        ASSERT_EQ(discretizeJointPath(path.data(), 4, 2, 0.25, 0, points), 4u);
-        const std::vector<double> coarse{0.15, 0.0, 0.3, 0.0, 0.3, 0.2, 0.3, 0.4};
-        for (std::size_t i = 0; i < coarse.size(); ++i)
-            EXPECT_NEAR(points[i], coarse[i], 1e-12) << i;
-        points.clear();
-        EXPECT_EQ(discretizeJointPath(path.data(), 4, 2, 0.1, 4, points), 4u);
-        EXPECT_EQ(points.size(), 8u);
-        EXPECT_NEAR(points[6], 0.3, 1e-12);
-        EXPECT_NEAR(points[7], 0.1, 1e-12);
-        points.clear();
-        EXPECT_EQ(discretizeJointPath(path.data(), 4, 2, std::nan(""), 0, points), 0u);
-        EXPECT_EQ(discretizeJointPath(path.data(), 4, 2, 0.0, 0, points), 0u);
-        EXPECT_EQ(discretizeJointPath(path.data(), 1, 2, 0.1, 0, points), 0u);
-        const std::vector<double> bad{0.0, 0.0, 0.1, 0.0, std::nan(""), 0.0};
-        EXPECT_EQ(discretizeJointPath(bad.data(), 3, 2, 0.1, 0, points), 1u);
-    }
-
     TEST(OmplReferencePolicy, BadConfigurationThrowsAtConstruction)
     {
         OmplPathPlannerSettings settings;

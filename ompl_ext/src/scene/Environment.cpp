@@ -62,8 +62,10 @@ namespace ropras::ompl_ext
         object.name = name;
         object.shapes = std::move(shapes);
         object.slots.reserve(object.shapes.size());
+        const int id = static_cast<int>(objects_.size());
         for (const Shape &shape : object.shapes)
         {
+            owners_[static_cast<std::size_t>(shape.type)].push_back(id);
             switch (shape.type)
             {
                 case ShapeType::Sphere:
@@ -90,7 +92,7 @@ namespace ropras::ompl_ext
         }
         objects_.push_back({std::move(def), pose});
         writeQueryForm(objects_.back());
-        return static_cast<int>(objects_.size()) - 1;
+        return id;
     }
 
     int Environment::addSphere(const std::string &name, const Eigen::Vector3d &center, double radius)
@@ -231,6 +233,8 @@ namespace ropras::ompl_ext
         cylinders_.clear();
         capsules_.clear();
         clouds_.clear();
+        for (std::vector<int> &owners : owners_)
+            owners.clear();
     }
 
     Eigen::Isometry3d Environment::shapeWorldPose(int id, std::size_t k) const
@@ -387,15 +391,24 @@ namespace ropras::ompl_ext
     double Environment::signedDistance(const Eigen::Vector3d &center, double radius) const
     {
         double best = std::numeric_limits<double>::infinity();
-        for (const Object &object : objects_)
-            for (const Shape &shape : object.def->shapes)
-            {
-                const Eigen::Isometry3d world = object.pose * shape.pose;
-                const Eigen::Vector3d p = world.inverse(Eigen::Isometry) * center;
-                best = std::min(best, primitiveDistance(shape, p) - radius);
-            }
+        for (std::size_t id = 0; id < objects_.size(); ++id)
+            best = std::min(best, objectSignedDistance(static_cast<int>(id), center, radius));
         if (base_)
             best = std::min(best, base_->signedDistance(center, radius));
+        return best;
+    }
+
+    double Environment::objectSignedDistance(int id, const Eigen::Vector3d &center, double radius) const
+    {
+        const std::vector<Shape> &shapes = objectShapes(id);
+        const Eigen::Isometry3d &pose = objects_[static_cast<std::size_t>(id)].pose;
+        double best = std::numeric_limits<double>::infinity();
+        for (const Shape &shape : shapes)
+        {
+            const Eigen::Isometry3d world = pose * shape.pose;
+            const Eigen::Vector3d p = world.inverse(Eigen::Isometry) * center;
+            best = std::min(best, primitiveDistance(shape, p) - radius);
+        }
         return best;
     }
 }  // namespace ropras::ompl_ext

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "ropras/core/Error.h"
+#include "scene/SegmentTests.h"
 
 namespace ropras::ompl_ext
 {
@@ -228,5 +229,67 @@ namespace ropras::ompl_ext
                 return best - radius - double(pointRadius_);
             h *= 2.0;
         }
+    }
+
+    bool PointCloud::firstSegmentHit(const Eigen::Vector3d &a, const Eigen::Vector3d &d, double tMax,
+                                     double &t) const noexcept
+    {
+        if (points_.empty() || !(tMax >= 0.0))
+            return false;
+        const double r = pointRadius_;
+        // widened a little so that rounding never drops a cell holding a point the exact test accepts
+        const double reach = r * (1.0 + 1e-6) + 1e-6;
+        const Eigen::Vector3d lo = min_.cast<double>(), hi = max_.cast<double>();
+        double tNear = 0.0, tFar = tMax;
+        for (int i = 0; i < 3; ++i)
+            if (!segment::clipSlab(a[i], d[i], lo[i] - reach, hi[i] + reach, tNear, tFar))
+                return false;
+
+        const double length = d.norm();
+        const double chunk = length > 0.0 ? double(cellSize_) / length : tFar - tNear + 1.0;
+        const double inv = 1.0 / double(cellSize_);
+        double best = tMax;
+        bool found = false;
+        // chunks of one cell length: a point whose first contact lies in a chunk is within `reach` of that
+        // chunk, so it is in the cells of the chunk's box widened by reach; once a chunk ends after the best
+        // contact found so far, no later chunk can hold an earlier one
+        for (double t0 = tNear; t0 <= tFar; t0 += chunk)
+        {
+            const double t1 = std::min(t0 + chunk, tFar);
+            const Eigen::Vector3d p0 = a + t0 * d, p1 = a + t1 * d;
+            int c0[3], c1[3];
+            for (int i = 0; i < 3; ++i)
+            {
+                const double last = double(cells_[i] - 1);
+                c0[i] = int(std::clamp(std::floor((std::min(p0[i], p1[i]) - reach - lo[i]) * inv), 0.0, last));
+                c1[i] = int(std::clamp(std::floor((std::max(p0[i], p1[i]) + reach - lo[i]) * inv), 0.0, last));
+            }
+            for (int iz = c0[2]; iz <= c1[2]; ++iz)
+            {
+                for (int iy = c0[1]; iy <= c1[1]; ++iy)
+                {
+                    const std::size_t row =
+                        (std::size_t(iz) * std::size_t(cells_[1]) + std::size_t(iy)) * std::size_t(cells_[0]);
+                    const unsigned begin = cellStart_[row + std::size_t(c0[0])];
+                    const unsigned end = cellStart_[row + std::size_t(c1[0]) + 1];
+                    for (unsigned k = begin; k < end; ++k)
+                    {
+                        double tk = 0.0;
+                        if (segment::sphere(a, d, points_[k].cast<double>(), r, best, tk) && (!found || tk < best))
+                        {
+                            best = tk;
+                            found = true;
+                        }
+                    }
+                }
+            }
+            if (found && best <= t1)
+                break;
+            if (t1 >= tFar)
+                break;
+        }
+        if (found)
+            t = best;
+        return found;
     }
 }  // namespace ropras::ompl_ext

@@ -9,26 +9,26 @@
 
 namespace ropras::ompl_ext
 {
+    const char *shapeTypeName(ShapeType type) noexcept
+    {
+        switch (type)
+        {
+            case ShapeType::Sphere:
+                return "sphere";
+            case ShapeType::Box:
+                return "box";
+            case ShapeType::Cylinder:
+                return "cylinder";
+            case ShapeType::Capsule:
+                return "capsule";
+            case ShapeType::PointCloud:
+                return "point cloud";
+        }
+        return "unknown";
+    }
+
     namespace detail
     {
-        const char *shapeTypeName(ShapeType type)
-        {
-            switch (type)
-            {
-                case ShapeType::Sphere:
-                    return "sphere";
-                case ShapeType::Box:
-                    return "box";
-                case ShapeType::Cylinder:
-                    return "cylinder";
-                case ShapeType::Capsule:
-                    return "capsule";
-                case ShapeType::PointCloud:
-                    return "point cloud";
-            }
-            return "unknown";
-        }
-
         /// empty string when \a pose is a finite rigid transform, otherwise what is wrong with it
         std::string poseProblem(const Eigen::Isometry3d &pose)
         {

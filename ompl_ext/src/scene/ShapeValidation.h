@@ -10,7 +10,6 @@
 
 namespace ropras::ompl_ext::detail
 {
-    const char *shapeTypeName(ShapeType type);
     /// empty string when \a pose is a finite rigid transform, otherwise what is wrong with it
     std::string poseProblem(const Eigen::Isometry3d &pose);
     bool positiveFinite(double x);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ropras/core/Error.h"
+#include "ropras/ompl_ext/motion/JointSteps.h"
 #include "ropras/pomdp/OmplPathPlanner.h"
 #include "ropras/pomdp/ReferencePolicy.h"
 #include "ropras/pomdp/SamplingHeuristic.h"
@@ -67,44 +68,9 @@ namespace ropras::pomdp
         }
     };
 
-    /** \brief Discretizes a piecewise-linear joint-space path into primitive steps: each straight segment of
-        \a waypoints (\a count x \a dof, row-major) is split into ceil(length / \a step) equal pieces, and the
-        end of every piece is appended to \a points (row-major, \a dof values each). So consecutive points
-        are at most \a step apart (Euclidean), every waypoint is a point (a straight move between consecutive
-        points never cuts a corner of the path: it lies on a segment the planner validated), and the last
-        point is the final waypoint. At most \a maxPoints are appended (0 = no limit): a truncated path ends
-        short of the target, on the path. The start is not appended; zero-length segments add nothing.
-        Returns the number appended; a non-positive or non-finite \a step or a non-finite waypoint appends
-        nothing more. */
-    inline std::size_t discretizeJointPath(const double *waypoints, std::size_t count, std::size_t dof, double step,
-                                           std::size_t maxPoints, std::vector<double> &points)
-    {
-        if (!(step > 0.0) || !std::isfinite(step) || count < 2 || dof == 0)
-            return 0;
-        std::size_t added = 0;
-        for (std::size_t s = 0; s + 1 < count; ++s)
-        {
-            const double *a = waypoints + s * dof;
-            const double *b = a + dof;
-            double length = 0.0;
-            for (std::size_t k = 0; k < dof; ++k)
-                length += (b[k] - a[k]) * (b[k] - a[k]);
-            length = std::sqrt(length);
-            if (!std::isfinite(length))
-                return added;
-            const auto pieces = static_cast<std::size_t>(std::ceil(length / step - 1e-9));
-            for (std::size_t i = 1; i <= pieces; ++i)
-            {
-                if (maxPoints != 0 && added >= maxPoints)
-                    return added;
-                const double u = static_cast<double>(i) / static_cast<double>(pieces);
-                for (std::size_t k = 0; k < dof; ++k)
-                    points.push_back(i == pieces ? b[k] : a[k] + u * (b[k] - a[k]));
-                ++added;
-            }
-        }
-        return added;
-    }
+    /// the joint-path discretizer models use in pathToMacroAction (ompl_ext/motion/JointSteps.h: L2 norm, equal
+    /// pieces of at most one step, every waypoint kept, optional truncation; throws Error on a bad step or path)
+    using ompl_ext::discretizeJointPath;
 
     /** \brief The OMPL-backed reference policy (Algorithm 1, SampleMacroActionSBMP): for a particle
         \a start, target <- SamplingHeuristic(b) (Uniform / Dynamic / epsilon-greedy), a joint-space plan

@@ -125,6 +125,11 @@ namespace ropras::ompl_ext
         const std::vector<CylinderObstacle> &cylinders() const { return cylinders_; }
         const std::vector<CapsuleObstacle> &capsules() const { return capsules_; }
         const std::vector<CloudObstacle> &clouds() const { return clouds_; }
+        /// the object id owning each entry of the query vector of \a type (indexed like spheres(), boxes(), ...)
+        const std::vector<int> &primitiveObjects(ShapeType type) const
+        {
+            return owners_[static_cast<std::size_t>(type)];
+        }
 
         /** \brief Attaches \a body to a link of \a robot (see AttachedBody; non-sphere geometry is spherized with
             \a spherizer); returns its index (attachedBody(i)). The name must be unique among objects and attached
@@ -146,6 +151,8 @@ namespace ropras::ompl_ext
         /// exact signed distance (double) from a sphere to the nearest obstacle surface (the base's included):
         /// negative when penetrating, +infinity for an empty environment. Reference computation for tests and tools.
         double signedDistance(const Eigen::Vector3d &center, double radius) const;
+        /// the same for the primitives of object \a id alone (throws Error for an unknown id)
+        double objectSignedDistance(int id, const Eigen::Vector3d &center, double radius) const;
 
     private:
         /// what never changes about an object: shared by the copies of an Environment (a particle's copy costs
@@ -175,6 +182,7 @@ namespace ropras::ompl_ext
         std::vector<CloudObstacle> clouds_;
         std::shared_ptr<const Environment> base_;
         std::vector<Attached> attached_;
+        std::vector<int> owners_[5];  ///< per ShapeType: object id of each query-form entry
     };
 }  // namespace ropras::ompl_ext
 

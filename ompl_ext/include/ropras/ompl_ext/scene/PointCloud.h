@@ -22,6 +22,11 @@ namespace ropras::ompl_ext
         /// distance from the sphere surface to the nearest inflated point (negative: penetration);
         /// +infinity for an empty cloud. Exact (brute force over candidate cells, for tests and tools).
         double signedDistance(const Eigen::Vector3d &center, double radius) const;
+        /** \brief The first contact of the segment \a a + t \a d, t in [0, \a tMax], with an inflated point
+            (cloud frame): true and \a t set when there is one before \a tMax (t = 0 when \a a is inside one).
+            Walks the grid cells along the segment, one cell length at a time, and stops at the first chunk
+            that holds a contact. Inputs must be finite; noexcept, no allocation. */
+        bool firstSegmentHit(const Eigen::Vector3d &a, const Eigen::Vector3d &d, double tMax, double &t) const noexcept;
 
         std::size_t size() const { return points_.size(); }
         float pointRadius() const { return pointRadius_; }

@@ -17,6 +17,8 @@ namespace ropras::ompl_ext
         Capsule,
         PointCloud
     };
+    /// "sphere", "box", "cylinder", "capsule", "point cloud"
+    const char *shapeTypeName(ShapeType type) noexcept;
 
     /** \brief An obstacle primitive in its object's frame (the authoring form).
         Sphere: radius. Box: full extents (x, y, z). Cylinder and capsule: radius and length along local z
