@@ -75,7 +75,7 @@ namespace
         {
             options.overrides = nlohmann::json::parse(file);
         }
-        catch (const nlohmann::json::parse_error &e)
+        catch (const nlohmann::json::exception &e)  // parse_error, and out_of_range for 1e400
         {
             throw ropras::Error("--config \"" + path + "\": malformed JSON: " + e.what());
         }

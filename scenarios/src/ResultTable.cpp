@@ -319,7 +319,7 @@ namespace ropras::scenarios
             {
                 record = nlohmann::json::parse(line);
             }
-            catch (const nlohmann::json::parse_error &e)
+            catch (const nlohmann::json::exception &e)  // parse_error, and out_of_range for 1e400
             {
                 throw Error(source + ": malformed JSON: " + e.what());
             }
