@@ -7,6 +7,7 @@ packages=(
   libompl-dev libfcl-dev liburdfdom-dev libtinyxml2-dev libassimp-dev libbullet-dev libeigen3-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
+  ompl-demos  # /usr/bin/ompl_benchmark_statistics: bench-mbm --ompl-log into Planner Arena's database (a test)
 )
 missing=()
 for p in "${packages[@]}"; do
