@@ -8,6 +8,7 @@ packages=(
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
   liborocos-kdl-dev libkdl-parser-dev  # only for `ropras bench-ik` and the tests (the KDL comparison)
+  ompl-demos  # /usr/bin/ompl_benchmark_statistics: bench-mbm --ompl-log into Planner Arena's database (a test)
 )
 missing=()
 for p in "${packages[@]}"; do

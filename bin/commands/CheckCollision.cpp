@@ -1,5 +1,6 @@
 // `ropras check-collision`: cross-checks the SIMD collision kernels against the independent FCL reference on a
-// user's robot and scenes, and optionally measures how conservative the sphere model is against the meshes.
+// user's robot and scenes (verdict 1, agreement), and optionally whether the sphere model covers the robot's meshes
+// (verdict 2, safety).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -89,6 +90,65 @@ namespace
         return text;
     }
 
+    std::string number(double value)
+    {
+        std::ostringstream s;
+        s << value;
+        return s.str();
+    }
+
+    /// why the agreement verdict fails: every failed check with its figure (never an empty list)
+    std::string agreementFailures(const CrossCheckReport &report, double centerTolerance)
+    {
+        std::vector<std::string> reasons;
+        if (report.configurations == 0)
+            reasons.push_back("no configuration was checked");
+        for (const BackendAgreement &b : report.backends)
+        {
+            const std::string name = backendLabel(b.backend);
+            if (b.disagreements != 0)
+                reasons.push_back(name + ": " + std::to_string(b.disagreements) +
+                                  " verdicts disagree with FCL outside the contact tolerance (DISAGREEMENT lines)");
+            if (b.batchMismatches != 0)
+                reasons.push_back(name + ": " + std::to_string(b.batchMismatches) +
+                                  " batch verdicts differ from the single-configuration ones");
+            if (!(b.maxCenterError <= centerTolerance))
+                reasons.push_back(name + ": sphere centres off by " + number(b.maxCenterError) + " m (tolerance " +
+                                  number(centerTolerance) +
+                                  " m; float kinematics lose precision with huge joint values or link offsets)");
+        }
+        std::string out;
+        for (const std::string &r : reasons)
+            out += (out.empty() ? "" : "; ") + r;
+        return out;
+    }
+
+    /// the mesh comparison and its report lines
+    MeshComparison compareMeshes(const Args &args, const RobotModel::Options &options,
+                                 const std::shared_ptr<const RobotModel> &robot,
+                                 const std::vector<CrossCheckScene> &scenes, const CrossCheckOptions &check)
+    {
+        // the same self pairs as the sphere model: its "Always" pairs, not ones found on the mesh covers
+        RobotModel::Options meshModelOptions = options;
+        meshModelOptions.disableAlwaysColliding = false;
+        meshModelOptions.disabledPairs = robot->alwaysCollidingPairs();
+        const auto meshRobot = RobotModel::fromUrdfFile(args.meshUrdf, args.srdf, meshModelOptions);
+        CrossCheckOptions meshOptions = check;
+        meshOptions.samples = args.meshSamples ? args.meshSamples : std::min<std::size_t>(args.samples, 5000);
+        const MeshComparison m = compareWithMeshes(robot, meshRobot, scenes, meshOptions);
+        std::cout << "\nmeshes     " << args.meshUrdf << " (FCL, " << meshRobot->collisionGeometries().size()
+                  << " collision elements), " << m.configurations << " configurations:\n";
+        std::cout << "  agree              " << m.agree << " (" << percent(m.agree, m.configurations) << ")\n";
+        std::cout << "  unsafe             " << m.unsafe << " (" << percent(m.unsafe, m.configurations)
+                  << "): spheres free, meshes collide (" << m.unsafeSelf << " of them self-collisions)\n";
+        std::cout << "  over-conservative  " << m.overConservative << " ("
+                  << percent(m.overConservative, m.configurations) << "): spheres collide, meshes free ("
+                  << m.overConservativeSelf << " of them self-collisions)\n";
+        for (const std::string &example : m.unsafeExamples)
+            std::cout << "  unsafe example: " << example << '\n';
+        return m;
+    }
+
     int run(const Args &args)
     {
         const auto start = std::chrono::steady_clock::now();
@@ -152,37 +212,37 @@ namespace
                 std::cout << "  " << a << " / " << b << '\n';
         }
 
+        // verdict 2 (with --mesh-urdf): is the sphere model safe, i.e. does it cover the meshes?
+        std::string safety = "not checked (no --mesh-urdf)";
+        bool safe = true;
         if (!args.meshUrdf.empty())
         {
-            // the same self pairs as the sphere model: its "Always" pairs, not ones found on the mesh covers
-            RobotModel::Options meshModelOptions = options;
-            meshModelOptions.disableAlwaysColliding = false;
-            meshModelOptions.disabledPairs = robot->alwaysCollidingPairs();
-            const auto meshRobot = RobotModel::fromUrdfFile(args.meshUrdf, args.srdf, meshModelOptions);
-            CrossCheckOptions meshOptions = check;
-            meshOptions.samples = args.meshSamples ? args.meshSamples : std::min<std::size_t>(args.samples, 5000);
-            const MeshComparison m = compareWithMeshes(robot, meshRobot, scenes, meshOptions);
-            std::cout << "\nmeshes     " << args.meshUrdf << " (FCL, " << meshRobot->collisionGeometries().size()
-                      << " collision elements), " << m.configurations << " configurations:\n";
-            std::cout << "  agree              " << m.agree << " (" << percent(m.agree, m.configurations) << ")\n";
-            std::cout << "  unsafe             " << m.unsafe << " (" << percent(m.unsafe, m.configurations)
-                      << "): spheres free, meshes collide (" << m.unsafeSelf << " of them self-collisions)\n";
-            std::cout << "  over-conservative  " << m.overConservative << " ("
-                      << percent(m.overConservative, m.configurations) << "): spheres collide, meshes free ("
-                      << m.overConservativeSelf << " of them self-collisions)\n";
-            for (const std::string &example : m.unsafeExamples)
-                std::cout << "  unsafe example: " << example << '\n';
+            const MeshComparison m = compareMeshes(args, options, robot, scenes, check);
+            safe = m.unsafe == 0;
+            safety = safe ? "SAFE: the spheres cover the meshes in all " + std::to_string(m.configurations) +
+                                " configurations (" + std::to_string(m.overConservative) + " over-conservative)"
+                          : "UNSAFE: " + std::to_string(m.unsafe) + " of " + std::to_string(m.configurations) +
+                                " configurations (" + percent(m.unsafe, m.configurations) +
+                                ") are collision-free for the spheres while the meshes collide";
+            if (!safe)
+                std::cout << "\nwarning: the sphere model is not conservative: a planner using it can return paths "
+                             "on which the real robot collides. Cover the meshes (spherize the collision meshes, see "
+                             "doc/spherizer.md) or enlarge the spheres of the links named above.\n";
         }
 
-        const bool passed = report.passed(check.centerTolerance);
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::cout << "\nresult     " << (passed ? "PASS" : "FAIL") << ": ";
-        if (passed)
-            std::cout << "every verdict more than " << args.tolerance
-                      << " m from contact agrees with FCL, sphere centres within " << check.centerTolerance << " m";
+        // verdict 1: do the SIMD kernels compute what the same-sphere FCL reference computes?
+        const bool agrees = report.passed(check.centerTolerance);
+        std::string agreement;
+        if (agrees)
+            agreement = "PASS: every verdict more than " + number(args.tolerance) +
+                        " m from contact agrees with FCL on the same spheres, sphere centres within " +
+                        number(check.centerTolerance) + " m";
         else
-            std::cout << "see the disagreements above";
-        std::printf(" (%.1f s)\n", seconds);
+            agreement = "FAIL: " + agreementFailures(report, check.centerTolerance);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::cout << "\nagreement  " << agreement << '\n' << "safety     " << safety << '\n';
+        const bool passed = agrees && safe;
+        std::printf("result     %s (%.1f s)\n", passed ? "PASS" : "FAIL", seconds);
         return passed ? 0 : 1;
     }
 

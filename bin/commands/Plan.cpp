@@ -11,6 +11,7 @@
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
+#include "ropras/ompl_ext/collision/StateDiagnosis.h"
 #include "ropras/ompl_ext/ompl/PlannerRegistry.h"
 #include "ropras/ompl_ext/ompl/PlanningContext.h"
 #include "ropras/ompl_ext/scene/SceneYaml.h"
@@ -54,10 +55,13 @@ namespace
         ompl::base::ScopedState<> start(ss.getStateSpace()), goal(ss.getStateSpace());
         context.setState(start.get(), request.start, a.request + ": start state");
         context.setState(goal.get(), request.goal, a.request + ": goal");
-        if (!context.validityChecker->isValid(start.get()))
-            throw Error(a.request + ": the start state is invalid (in collision or outside the joint limits)");
-        if (!context.validityChecker->isValid(goal.get()))
-            throw Error(a.request + ": the goal state is invalid (in collision or outside the joint limits)");
+        for (const auto &[what, state] : {std::pair{"start state", start.get()}, std::pair{"goal", goal.get()}})
+        {
+            const double *q = state->as<ompl::base::RealVectorStateSpace::StateType>()->values;
+            const std::string why = explainInvalidState(*context.checker, *environment, q);
+            if (!why.empty())
+                throw Error(a.request + ": the " + what + " is invalid: " + why);
+        }
         ss.setStartAndGoalStates(start, goal);
         ss.setup();
 

@@ -14,6 +14,7 @@
 
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
+#include "ProgressBar.h"
 #include "ropras/core/Error.h"
 #include "ropras/scenarios/ExperimentRunner.h"
 #include "ropras/scenarios/ResultTable.h"
@@ -46,19 +47,6 @@ namespace
         bool quiet{false};
     };
 
-    std::string duration(double seconds)
-    {
-        const auto s = static_cast<long long>(seconds + 0.5);
-        char buffer[32];
-        if (s >= 3600)
-            std::snprintf(buffer, sizeof(buffer), "%lldh%02lldm%02llds", s / 3600, (s / 60) % 60, s % 60);
-        else if (s >= 60)
-            std::snprintf(buffer, sizeof(buffer), "%lldm%02llds", s / 60, s % 60);
-        else
-            std::snprintf(buffer, sizeof(buffer), "%llds", s);
-        return buffer;
-    }
-
     ropras::scenarios::ScenarioOptions scenarioOptions(const std::string &path)
     {
         ropras::scenarios::ScenarioOptions options;
@@ -75,7 +63,7 @@ namespace
         {
             options.overrides = nlohmann::json::parse(file);
         }
-        catch (const nlohmann::json::parse_error &e)
+        catch (const nlohmann::json::exception &e)  // parse_error, and out_of_range for 1e400
         {
             throw ropras::Error("--config \"" + path + "\": malformed JSON: " + e.what());
         }
@@ -183,18 +171,15 @@ namespace
             {
                 return;
             }
-            const double eta =
-                p.done > 0 ? p.elapsedSeconds / static_cast<double>(p.done) * static_cast<double>(p.total - p.done)
-                           : 0.0;
+            const double eta = ropras::bin::remainingSeconds(p.elapsedSeconds, p.done, p.total);
             const auto &r = *p.record;
             successes += r["success"].get<bool>() ? 1 : 0;
             if (terminal)
             {
-                constexpr int WIDTH = 30;
-                const int filled = static_cast<int>(WIDTH * p.done / std::max<std::size_t>(1, p.total));
-                std::cerr << "\r[" << std::string(filled, '#') << std::string(WIDTH - filled, '.') << "] " << p.done
-                          << "/" << p.total << " episodes, " << successes << " successes, "
-                          << duration(p.elapsedSeconds) << " elapsed, ETA " << duration(eta) << "   " << std::flush;
+                std::cerr << "\r" << ropras::bin::progressBar(p.done, p.total) << " " << p.done << "/" << p.total
+                          << " episodes, " << successes << " successes, "
+                          << ropras::bin::formatDuration(p.elapsedSeconds) << " elapsed, ETA "
+                          << ropras::bin::formatDuration(eta) << "   " << std::flush;
                 if (p.done == p.total)
                 {
                     std::cerr << '\n';
@@ -209,7 +194,8 @@ namespace
                               r["episode"].get<std::size_t>(), p.done, p.total,
                               r["success"].get<bool>() ? "success" : "failure", r["undiscounted_return"].get<double>(),
                               r["steps"].get<std::size_t>(), r["sims_per_call"].get<double>(),
-                              duration(p.elapsedSeconds).c_str(), duration(eta).c_str());
+                              ropras::bin::formatDuration(p.elapsedSeconds).c_str(),
+                              ropras::bin::formatDuration(eta).c_str());
                 std::cerr << line << '\n';
             }
         };

@@ -78,7 +78,14 @@ namespace ropras::pomdp
         }
         if (!unknown.empty())
         {
-            throw Error("unknown parameter(s) for " + context + ": " + unknown);
+            std::set<std::string> valid = used_;
+            valid.insert(exempt.begin(), exempt.end());
+            std::string names;
+            for (const auto &name : valid)
+            {
+                names += (names.empty() ? "" : ", ") + name;
+            }
+            throw Error("unknown parameter(s) for " + context + ": " + unknown + " (valid: " + names + ")");
         }
     }
 }  // namespace ropras::pomdp

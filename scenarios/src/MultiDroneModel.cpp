@@ -140,7 +140,7 @@ namespace ropras::scenarios
         {
             if (!(value > 0.0) || !std::isfinite(value))
             {
-                throw Error(where(scenario, key) + " = " + std::to_string(value) + " must be > 0");
+                throw Error(where(scenario, key) + " = " + nlohmann::json(value).dump() + " must be > 0");
             }
         };
         positive("drone_radius", droneRadius);
@@ -152,13 +152,13 @@ namespace ropras::scenarios
         positive("observation_bin", observationBin);
         if (!(reinvigorateSigma >= 0.0) || !std::isfinite(reinvigorateSigma))
         {
-            throw Error(where(scenario, "reinvigorate_sigma") + " = " + std::to_string(reinvigorateSigma) +
+            throw Error(where(scenario, "reinvigorate_sigma") + " = " + nlohmann::json(reinvigorateSigma).dump() +
                         " must be >= 0");
         }
         if (!(captureRadius < detectionRange))
         {
-            throw Error(where(scenario, "capture_radius") + " = " + std::to_string(captureRadius) +
-                        " must be smaller than detection_range = " + std::to_string(detectionRange));
+            throw Error(where(scenario, "capture_radius") + " = " + nlohmann::json(captureRadius).dump() +
+                        " must be smaller than detection_range = " + nlohmann::json(detectionRange).dump());
         }
         if (!std::isfinite(stepReward) || !std::isfinite(captureReward))
         {
@@ -166,7 +166,7 @@ namespace ropras::scenarios
         }
         if (!(discount > 0.0 && discount <= 1.0))
         {
-            throw Error(where(scenario, "discount") + " = " + std::to_string(discount) + " must be in (0, 1]");
+            throw Error(where(scenario, "discount") + " = " + nlohmann::json(discount).dump() + " must be in (0, 1]");
         }
         if (horizon == 0)
         {
@@ -199,7 +199,7 @@ namespace ropras::scenarios
             static_cast<double>(MULTI_DRONE_COUNT) * 4.0 / 3.0 * PI * captureRadius * captureRadius * captureRadius;
         if (!(balls < 0.5 * volume))
         {
-            throw Error(where(scenario, "capture_radius") + " = " + std::to_string(captureRadius) +
+            throw Error(where(scenario, "capture_radius") + " = " + nlohmann::json(captureRadius).dump() +
                         ": the capture balls of the drones cover half of the box or more");
         }
     }

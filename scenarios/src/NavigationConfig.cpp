@@ -55,7 +55,7 @@ namespace ropras::scenarios
                 const double v = number(key);
                 if (!(v > 0.0))
                 {
-                    fail(key, "= " + std::to_string(v) + " must be > 0");
+                    fail(key, "= " + nlohmann::json(v).dump() + " must be > 0");
                 }
                 return v;
             }
@@ -65,7 +65,7 @@ namespace ropras::scenarios
                 const double v = number(key);
                 if (!(v >= 0.0))
                 {
-                    fail(key, "= " + std::to_string(v) + " must be >= 0");
+                    fail(key, "= " + nlohmann::json(v).dump() + " must be >= 0");
                 }
                 return v;
             }
@@ -163,7 +163,7 @@ namespace ropras::scenarios
         c.slip = r.nonNegative("slip");
         if (c.slip > 1.0)
         {
-            r.fail("slip", "= " + std::to_string(c.slip) + " must be in [0, 1]");
+            r.fail("slip", "= " + nlohmann::json(c.slip).dump() + " must be in [0, 1]");
         }
         c.robotRadius = r.positive("robot_radius");
         c.stepReward = r.number("step_reward");
@@ -181,7 +181,7 @@ namespace ropras::scenarios
         c.discount = r.positive("discount");
         if (!(c.discount < 1.0))
         {
-            r.fail("discount", "= " + std::to_string(c.discount) + " must be in (0, 1)");
+            r.fail("discount", "= " + nlohmann::json(c.discount).dump() + " must be in (0, 1)");
         }
         const double horizon = r.positive("horizon");
         if (horizon != std::floor(horizon) || horizon > 1e7)
@@ -266,7 +266,7 @@ namespace ropras::scenarios
                     if (b.distance(p.data()) < c.robotRadius)
                     {
                         r.fail(key, "= " + pointString(p, c.dims) + " is in collision (robot_radius " +
-                                        std::to_string(c.robotRadius) + ") with the box " +
+                                        nlohmann::json(c.robotRadius).dump() + ") with the box " +
                                         boxToJson(b, c.dims).dump());
                     }
                 }

@@ -45,6 +45,58 @@ namespace ropras::scenarios
             return value.get<std::uint64_t>();
         }
 
+        /// \a min <= value <= \a max (and whole with \a whole), else an Error naming the key and the value
+        void requireRange(double value, const char *key, const std::string &source, double min, double max, bool whole,
+                          const char *meaning)
+        {
+            if (value >= min && value <= max && (!whole || value == std::floor(value)))
+            {
+                return;
+            }
+            throw Error(source + ": key \"" + key + "\" = " + nlohmann::json(value).dump() + " must be " + meaning);
+        }
+
+        /** A record `ropras run` cannot have written: negative or fractional steps, a reference failure rate
+            outside [0, 1] (200 %), negative counts or times, more failed than requested reference plans, or
+            macro_min > macro_max in its configuration or parameters: an error, never a row averaging it. */
+        void checkEpisodeValues(const nlohmann::json &record, const std::string &source, double steps, double sims,
+                                double planTime, double refFailures)
+        {
+            constexpr double BIG = 1e300;
+            requireRange(steps, "steps", source, 0.0, BIG, true, "a whole number >= 0");
+            requireRange(sims, "sims_per_call", source, 0.0, BIG, false, ">= 0");
+            requireRange(planTime, "plan_time_s", source, 0.0, BIG, false, ">= 0 seconds");
+            requireRange(refFailures, "ref_failures", source, 0.0, 1.0, false,
+                         "a fraction of the reference plans in [0, 1]");
+            if (record.contains("epsilon") && record["epsilon"].is_number())
+            {
+                requireRange(record["epsilon"].get<double>(), "epsilon", source, 0.0, 1.0, false, "in [0, 1]");
+            }
+            const auto count = [&](const char *key)
+            { return record.contains(key) && record[key].is_number() ? record[key].get<double>() : -1.0; };
+            if (count("ref_failed") > count("ref_requested") && count("ref_requested") >= 0.0)
+            {
+                throw Error(source + ": key \"ref_failed\" = " + record["ref_failed"].dump() +
+                            " exceeds \"ref_requested\" = " + record["ref_requested"].dump());
+            }
+            for (const char *part : {"config", "params"})
+            {
+                if (!record.contains(part) || !record[part].is_object())
+                {
+                    continue;
+                }
+                const auto &settings = record[part];
+                const auto lo = settings.find("macro_min");
+                const auto hi = settings.find("macro_max");
+                if (lo != settings.end() && hi != settings.end() && lo->is_number() && hi->is_number() &&
+                    lo->get<double>() > hi->get<double>())
+                {
+                    throw Error(source + ": " + part + " has macro_min = " + lo->dump() +
+                                " > macro_max = " + hi->dump());
+                }
+            }
+        }
+
         std::string text(const nlohmann::json &record, const char *key, const std::string &source)
         {
             const auto &value = required(record, key, source);
@@ -199,6 +251,7 @@ namespace ropras::scenarios
         const double planTime = number(record, "plan_time_s", source);
         const double refFailures = number(record, "ref_failures", source);
         const bool usesReference = g.solver != "pomcp";
+        checkEpisodeValues(record, source, steps, sims, planTime, refFailures);
 
         // the configuration that makes a row; settings a solver does not use are left out (POMCP: heuristic,
         // epsilon, planner)
@@ -319,7 +372,7 @@ namespace ropras::scenarios
             {
                 record = nlohmann::json::parse(line);
             }
-            catch (const nlohmann::json::parse_error &e)
+            catch (const nlohmann::json::exception &e)  // parse_error, and out_of_range for 1e400
             {
                 throw Error(source + ": malformed JSON: " + e.what());
             }

@@ -276,7 +276,7 @@ namespace ropras::scenarios
         {
             return nlohmann::json::parse(file);
         }
-        catch (const nlohmann::json::parse_error &e)
+        catch (const nlohmann::json::exception &e)  // parse_error, and out_of_range for 1e400
         {
             throw Error("recording \"" + path + "\": malformed JSON: " + e.what());
         }

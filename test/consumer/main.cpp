@@ -1,19 +1,23 @@
-// Loads the arm that ropras installs, builds a one-box scene and checks two configurations.
+// Loads the arm that ropras installs (from ropras_ROBOTS_DIR, as the package config file sets it), builds a one-box
+// scene and checks two configurations.
 #include <iostream>
+#include <limits>
 #include <vector>
 
 #include <ropras/ompl_ext/collision/CollisionChecker.h>
 #include <ropras/ompl_ext/model/RobotModel.h>
 #include <ropras/ompl_ext/scene/Environment.h>
 
-int main(int argc, char **argv)
+// The libraries are built with Eigen's alignment pinned to 16 bytes; a consumer that saw another value would lay
+// out ropras' public Eigen members differently from the library (the exported targets must carry the definition).
+#if !defined(EIGEN_MAX_ALIGN_BYTES) || EIGEN_MAX_ALIGN_BYTES != 16 || !defined(EIGEN_MAX_STATIC_ALIGN_BYTES) || \
+    EIGEN_MAX_STATIC_ALIGN_BYTES != 16
+#error "ropras::ompl_ext must give its consumers EIGEN_MAX_ALIGN_BYTES=16 and EIGEN_MAX_STATIC_ALIGN_BYTES=16"
+#endif
+
+int main()
 {
-    if (argc != 2)
-    {
-        std::cerr << "usage: consumer ROBOTS_DIR\n";
-        return 2;
-    }
-    const std::string dir = argv[1];
+    const std::string dir = ROPRAS_ROBOTS_DIR;
     auto robot = ropras::ompl_ext::RobotModel::fromUrdfFile(dir + "/ropras_arm/ropras_arm.urdf");
     ropras::ompl_ext::Environment env;
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();

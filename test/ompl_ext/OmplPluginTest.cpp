@@ -11,6 +11,7 @@
 #include <climits>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
 #include <thread>
 
@@ -317,13 +318,75 @@ TEST(OmplPlugin, EnvironmentSwapIsSeenByBothValidators)
     si->freeState(s);
 }
 
+namespace
+{
+    /// a 3-D unit cube without obstacles, set up: enough to create every planner of the registry
+    ompl::base::SpaceInformationPtr freeCubeSpace()
+    {
+        auto space = std::make_shared<ompl::base::RealVectorStateSpace>(3);
+        space->setBounds(-1, 1);
+        auto si = std::make_shared<ompl::base::SpaceInformation>(space);
+        si->setStateValidityChecker([](const ompl::base::State *) { return true; });
+        si->setup();
+        return si;
+    }
+}  // namespace
+
+// Parameter values: every parameter of every planner takes its own default back (no false rejection), and the
+// values OMPL would accept silently (range=-1 means "automatic") or reject without a name are errors naming the
+// planner, the parameter and the value.
+TEST(OmplPlugin, RegistryChecksParameterValues)
+{
+    const auto si = freeCubeSpace();
+    auto &registry = PlannerRegistry::instance();
+    std::size_t checked = 0;
+    for (const std::string &name : registry.names())
+    {
+        std::map<std::string, std::string> defaults;
+        registry.create(name, si)->params().getParams(defaults);
+        for (const auto &[key, value] : defaults)
+        {
+            if (value.empty() || value == "inf" || value == "-inf")
+                continue;  // a parameter without a getter, or an infinite default (OMPL cannot parse "inf" back)
+            EXPECT_NO_THROW(registry.create(name, si, {{key, value}})) << name << " " << key << "=" << value;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 100u);
+    const auto message = [&](const std::string &planner, const std::string &key, const std::string &value)
+    {
+        try
+        {
+            registry.create(planner, si, {{key, value}});
+        }
+        catch (const ropras::Error &e)
+        {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(message("RRTConnect", "range", "-1"),
+              "planner RRTConnect: parameter 'range' = '-1' must be >= 0 (OMPL's range for it: 0.:1.:10000.)");
+    EXPECT_EQ(message("RRTConnect", "range", "nan"),
+              "planner RRTConnect: parameter 'range' = 'nan' must be a finite number");
+    EXPECT_EQ(message("RRTConnect", "range", "inf"),
+              "planner RRTConnect: parameter 'range' = 'inf' must be a finite number");
+    EXPECT_EQ(message("RRTConnect", "range", "1e999"),
+              "planner RRTConnect: parameter 'range' = '1e999' is not a number");
+    EXPECT_EQ(message("RRTConnect", "range", "2m"), "planner RRTConnect: parameter 'range' = '2m' is not a number");
+    EXPECT_EQ(message("RRT", "goal_bias", "1.5").find("planner RRT: parameter 'goal_bias' = '1.5' must be <= 1"), 0u);
+    EXPECT_EQ(message("PRM", "max_nearest_neighbors", "2.5"),
+              "planner PRM: parameter 'max_nearest_neighbors' = '2.5' must be a whole number");
+    EXPECT_NE(message("PRM", "max_nearest_neighbors", "-3"), "");
+    EXPECT_EQ(message("VectorizedRRTConnect", "halton", "2"),
+              "planner VectorizedRRTConnect: parameter 'halton' = '2' must be 0, 1, true or false");
+    EXPECT_EQ(message("RRTConnect", "range", "0.5"), "");
+    EXPECT_EQ(message("VectorizedRRTConnect", "halton", "true"), "");
+}
+
 TEST(OmplPlugin, RegistryCreatesEveryPlannerAndRejectsBadNames)
 {
-    auto space = std::make_shared<ompl::base::RealVectorStateSpace>(3);
-    space->setBounds(-1, 1);
-    auto si = std::make_shared<ompl::base::SpaceInformation>(space);
-    si->setStateValidityChecker([](const ompl::base::State *) { return true; });
-    si->setup();
+    const auto si = freeCubeSpace();
     auto &registry = PlannerRegistry::instance();
     const auto names = registry.names();
     EXPECT_GE(names.size(), 39u);

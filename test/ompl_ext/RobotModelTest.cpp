@@ -592,6 +592,54 @@ TEST(RobotModel, ShippedRoprasArm)
     EXPECT_LT(colliding, 400);
 }
 
+// numbers no robot has (limits of +-1e308 overflow the sampler's range, a 1e30 m sphere, offsets of 1e30 m) and
+// a <mimic> naming a joint that does not exist are errors naming the joint or link; the limits themselves load
+TEST(RobotModel, AbsurdNumbersAndUnknownMimicTargetsAreRejected)
+{
+    const auto arm =
+        [](const std::string &limits, const std::string &geometry, const std::string &origin, const std::string &extra)
+    {
+        return "<robot name=\"r\"><link name=\"base\"/><link name=\"l1\"><collision><geometry>" + geometry +
+               "</geometry></collision></link><link name=\"l2\"/>"
+               "<joint name=\"j1\" type=\"revolute\"><parent link=\"base\"/><child link=\"l1\"/><origin xyz=\"" +
+               origin + "\"/><axis xyz=\"0 0 1\"/><limit " + limits +
+               " effort=\"1\" velocity=\"1\"/></joint><joint name=\"j2\" type=\"prismatic\"><parent link=\"l1\"/>"
+               "<child link=\"l2\"/><axis xyz=\"1 0 0\"/><limit lower=\"0\" upper=\"0.5\" effort=\"1\" "
+               "velocity=\"1\"/>" +
+               extra + "</joint></robot>";
+    };
+    const std::string sphere = "<sphere radius=\"0.1\"/>";
+    const std::string limits = "lower=\"-3\" upper=\"3\"";
+    EXPECT_EQ(RobotModel::fromUrdfString(arm(limits, sphere, "0 0 0", ""), ".", "ok.urdf")->dof(), 2u);
+    EXPECT_EQ(
+        RobotModel::fromUrdfString(arm("lower=\"-100\" upper=\"100\"", sphere, "0 0 99", ""), ".", "edge.urdf")->dof(),
+        2u);
+    expectErrorMentions(
+        [&]
+        { RobotModel::fromUrdfString(arm("lower=\"-1e308\" upper=\"1e308\"", sphere, "0 0 0", ""), ".", "a.urdf"); },
+        {"a.urdf", "joint 'j1'", "1e+308", "beyond +-100 rad"});
+    expectErrorMentions(
+        [&] { RobotModel::fromUrdfString(arm("lower=\"0\" upper=\"101\"", sphere, "0 0 0", ""), ".", "b.urdf"); },
+        {"b.urdf", "joint 'j1'", "101"});
+    expectErrorMentions(
+        [&] { RobotModel::fromUrdfString(arm(limits, "<sphere radius=\"1e30\"/>", "0 0 0", ""), ".", "c.urdf"); },
+        {"c.urdf", "link 'l1'", "sphere radius", "1e+30"});
+    expectErrorMentions(
+        [&] { RobotModel::fromUrdfString(arm(limits, "<box size=\"1 1e30 1\"/>", "0 0 0", ""), ".", "d.urdf"); },
+        {"d.urdf", "link 'l1'", "box size"});
+    expectErrorMentions([&] { RobotModel::fromUrdfString(arm(limits, sphere, "1e30 0 0", ""), ".", "e.urdf"); },
+                        {"e.urdf", "joint 'j1' <origin>", "1e+30"});
+    expectErrorMentions(
+        [&] { RobotModel::fromUrdfString(arm(limits, sphere, "0 0 0", "<mimic joint=\"jl\"/>"), ".", "f.urdf"); },
+        {"f.urdf", "joint 'j2' mimics joint 'jl', which the URDF does not have"});
+    expectErrorMentions(
+        [&] { RobotModel::fromUrdfString(arm(limits, sphere, "0 0 0", "<mimic joint=\"j2\"/>"), ".", "g.urdf"); },
+        {"g.urdf", "joint 'j2' mimics itself"});
+    // a special file is not "not found"
+    expectErrorMentions([] { RobotModel::fromUrdfFile("/dev/null"); }, {"/dev/null", "not a regular file"});
+    expectErrorMentions([] { RobotModel::fromUrdfFile("/tmp"); }, {"/tmp", "not a regular file"});
+}
+
 TEST(RobotModel, MimicJointsAreHeld)
 {
     const std::string urdf = R"(<robot name="grip">

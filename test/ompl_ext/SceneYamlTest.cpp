@@ -7,10 +7,12 @@
 #include <fstream>
 #include <sstream>
 
+#include "ExpectError.h"
 #include "ropras/core/Error.h"
 
 namespace fs = std::filesystem;
 using namespace ropras::ompl_ext;
+using ropras::test::expectErrorMentions;
 
 namespace
 {
@@ -254,6 +256,22 @@ TEST(SceneYaml, RejectsMalformedScenes)
 
     const std::string missing = errorOf([] { loadPlanningScene("/nonexistent/dir/scene.yaml"); });
     EXPECT_NE(missing.find("/nonexistent/dir/scene.yaml"), std::string::npos) << missing;
+}
+
+// yaml-cpp keeps one of two equal keys silently: a repeated key is an error with both lines, in scenes and requests
+TEST(SceneYaml, RejectsDuplicateKeys)
+{
+    expectErrorMentions([] { planningSceneFromString("name: a\nname: b\nworld: {}\n", "dup.yaml"); },
+                        {"dup.yaml:2", "key 'name'", "given twice", "first on line 1"});
+    const std::string object =
+        "world:\n  collision_objects:\n    - id: o\n      primitives:\n        - type: box\n"
+        "          dimensions: [1, 1, 1]\n          dimensions: [2, 2, 2]\n"
+        "      primitive_poses:\n        - position: [0, 0, 0]\n"
+        "          orientation: [0, 0, 0, 1]\n";
+    expectErrorMentions([&] { planningSceneFromString(object, "nested.yaml"); },
+                        {"nested.yaml:7", "key 'dimensions'", "first on line 6"});
+    expectErrorMentions([] { motionPlanRequestFromString("start_state: {}\nstart_state: {}\n", "request.yaml"); },
+                        {"request.yaml:2", "key 'start_state'"});
 }
 
 TEST(SceneYaml, LoadsMbmRequest)

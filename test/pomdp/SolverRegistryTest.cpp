@@ -189,6 +189,30 @@ TEST(SolverRegistryTest, BadInputThrowsWithNames)
     EXPECT_THROW(RopRas3Solver<TigerModel>(model, nullptr, RopRas3Settings{}), ropras::Error);
 }
 
+// makeSolver itself rejects a misspelt parameter (the library API, not only the CLI's runner), with the error the
+// CLI gives: it names the unknown parameter and lists the valid ones.
+TEST(SolverRegistryTest, MakeSolverRejectsAMisspeltParameter)
+{
+    const auto components = tigerComponents();
+    ParameterMap typo;
+    typo.set("dpth", 5);
+    const std::string direct = errorOf([&] { makeSolver("ropras3", components, withDefaults(components, typo)); });
+    EXPECT_NE(direct.find("unknown parameter(s) for solver ropras3: dpth"), std::string::npos) << direct;
+    for (const char *valid : {"depth", "eta", "beta_a", "particles"})
+        EXPECT_NE(direct.find(valid), std::string::npos) << valid << " missing from: " << direct;
+    const std::string viaRegistry = errorOf([&] { modelRegistry().create("tiger", "ropras3", typo); });
+    EXPECT_EQ(viaRegistry, direct);
+    for (const std::string &solver : solverNames<TigerModel>())
+    {
+        const std::string message = errorOf([&] { makeSolver(solver, components, withDefaults(components, typo)); });
+        EXPECT_NE(message.find("dpth"), std::string::npos) << solver << ": " << message;
+        // the correct names build: every solver accepts the particle filter's names and the model's defaults
+        ParameterMap good;
+        good.set("particles", 100);
+        EXPECT_NO_THROW(makeSolver(solver, components, withDefaults(components, good))) << solver;
+    }
+}
+
 TEST(SolverRegistryTest, TimeBudgetStopsTheSearch)
 {
     auto runner = modelRegistry().create("tiger", "pomcp", ParameterMap{});

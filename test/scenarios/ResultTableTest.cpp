@@ -191,4 +191,58 @@ namespace ropras::scenarios::test
         expectErrorMentions([&] { table.addFile("/nonexistent/runs.jsonl"); }, {"/nonexistent/runs.jsonl"});
         EXPECT_EQ(table.size(), 0u);
     }
+    // values `ropras run` cannot write: each is an error naming the line and the key, and nothing is counted
+    TEST(ResultTable, ImpossibleValuesAreRejected)
+    {
+        ResultTable table;
+        const auto base = record("refbasic", "uniform", 0, true, 1.0, 10.0, 5.0, 0.1, 0.5);
+        auto negativeSteps = base;
+        negativeSteps["steps"] = -3;
+        expectErrorMentions([&] { table.add(negativeSteps, "r:1"); }, {"r:1", "\"steps\"", "-3", "whole number"});
+        auto fractionalSteps = base;
+        fractionalSteps["steps"] = 2.5;
+        expectErrorMentions([&] { table.add(fractionalSteps, "r:2"); }, {"r:2", "\"steps\"", "2.5"});
+        auto failureRate = base;
+        failureRate["ref_failures"] = 2.0;  // 200 %
+        expectErrorMentions([&] { table.add(failureRate, "r:3"); }, {"r:3", "\"ref_failures\"", "[0, 1]"});
+        auto negativeRate = base;
+        negativeRate["ref_failures"] = -0.1;
+        expectErrorMentions([&] { table.add(negativeRate, "r:4"); }, {"r:4", "\"ref_failures\""});
+        auto negativeTime = base;
+        negativeTime["plan_time_s"] = -1.0;
+        expectErrorMentions([&] { table.add(negativeTime, "r:5"); }, {"r:5", "\"plan_time_s\""});
+        auto negativeSims = base;
+        negativeSims["sims_per_call"] = -5.0;
+        expectErrorMentions([&] { table.add(negativeSims, "r:6"); }, {"r:6", "\"sims_per_call\""});
+        auto macros = base;
+        macros["config"]["macro_min"] = 8;
+        macros["config"]["macro_max"] = 2;
+        expectErrorMentions([&] { table.add(macros, "r:7"); }, {"r:7", "macro_min = 8 > macro_max = 2"});
+        auto paramMacros = base;
+        paramMacros["params"] = {{"macro_min", 5}, {"macro_max", 1}};
+        expectErrorMentions([&] { table.add(paramMacros, "r:8"); }, {"r:8", "params", "macro_min"});
+        auto moreFailedThanRequested = base;
+        moreFailedThanRequested["ref_failed"] = 20;
+        expectErrorMentions([&] { table.add(moreFailedThanRequested, "r:9"); }, {"r:9", "ref_failed", "ref_requested"});
+        auto epsilon = base;
+        epsilon["epsilon"] = 1.5;
+        expectErrorMentions([&] { table.add(epsilon, "r:10"); }, {"r:10", "\"epsilon\""});
+        EXPECT_EQ(table.size(), 0u);
+        // the limits themselves are fine
+        auto edge = base;
+        edge["ref_failures"] = 1.0;
+        edge["steps"] = 0;
+        edge["config"]["macro_min"] = 3;
+        edge["config"]["macro_max"] = 3;
+        EXPECT_TRUE(table.add(edge, "r:11"));
+    }
+
+    // a number beyond a double in a JSON line (1e400) is a malformed line, named, not an uncaught parser error
+    TEST(ResultTable, NumberOverflowIsAMalformedLine)
+    {
+        ResultTable table;
+        std::stringstream overflow("{\"steps\": 1e400}\n");
+        expectErrorMentions([&] { table.addJsonLines(overflow, "big.jsonl"); },
+                            {"big.jsonl:1", "malformed JSON", "overflow"});
+    }
 }  // namespace ropras::scenarios::test

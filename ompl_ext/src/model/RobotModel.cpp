@@ -21,6 +21,7 @@
 
 #include "model/EnclosingSphere.h"
 #include "model/SrdfReader.h"
+#include "model/UrdfSanity.h"
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/model/MeshLoader.h"
 
@@ -35,7 +36,10 @@ namespace ropras::ompl_ext
             std::error_code ec;
             if (!std::filesystem::is_regular_file(path, ec))
             {
-                throw Error(std::string(what) + " '" + path + "': file not found");
+                // /dev/null, a folder or a pipe exists: "not found" would send the user looking for a typo
+                throw Error(std::string(what) + " '" + path + "': " +
+                            (std::filesystem::exists(path, ec) ? "not a regular file (a folder, device or pipe)"
+                                                               : "file not found"));
             }
             std::ifstream in(path, std::ios::binary);
             if (!in)
@@ -131,6 +135,11 @@ namespace ropras::ompl_ext
 
     private:
         [[noreturn]] void fail(const std::string &what) const { throw Error("URDF '" + urdfName_ + "': " + what); }
+        void failIf(const std::string &problem) const
+        {
+            if (!problem.empty())
+                fail(problem);
+        }
 
         void checkBasePose() const
         {
@@ -347,6 +356,8 @@ namespace ropras::ompl_ext
                 {
                     fail("joint '" + uj.name + "' has a non-finite <origin>");
                 }
+                failIf(urdf_sanity::originProblem("joint '" + uj.name + "' <origin>", j.origin));
+                failIf(urdf_sanity::mimicProblem(urdf, uj));
                 if (j.type != JointType::Fixed)
                 {
                     const Eigen::Vector3d axis(uj.axis.x, uj.axis.y, uj.axis.z);
@@ -406,6 +417,7 @@ namespace ropras::ompl_ext
                         fail("joint '" + uj.name + "' has invalid limits [" + fmt(lower[i]) + ", " + fmt(upper[i]) +
                              "]");
                     }
+                    failIf(urdf_sanity::limitProblem(uj.name, joints[i].type, lower[i], upper[i]));
                 }
             }
 
@@ -525,6 +537,8 @@ namespace ropras::ompl_ext
                 fail("link '" + link + "' <collision> #" + std::to_string(element) + ": " + what + " " + fmt(v) +
                      " must be positive and finite");
             }
+            failIf(urdf_sanity::sizeProblem("link '" + link + "' <collision> #" + std::to_string(element) + ": " + what,
+                                            v, what == "mesh scale"));
         }
 
         void buildCollisionGeometry(const urdf::ModelInterface &urdf)
@@ -556,6 +570,8 @@ namespace ropras::ompl_ext
                         fail("link '" + link.name + "' <collision> #" + std::to_string(element) +
                              ": non-finite <origin>");
                     }
+                    failIf(urdf_sanity::originProblem(
+                        "link '" + link.name + "' <collision> #" + std::to_string(element) + " <origin>", g.origin));
                     SphereCover cover;
                     try
                     {

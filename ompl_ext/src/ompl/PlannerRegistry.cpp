@@ -1,5 +1,12 @@
 #include "ropras/ompl_ext/ompl/PlannerRegistry.h"
 
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+#include <ompl/base/GenericParam.h>
 #include <ompl/geometric/planners/AnytimePathShortening.h>
 #include <ompl/geometric/planners/cforest/CForest.h>
 #include <ompl/geometric/planners/est/BiEST.h>
@@ -40,6 +47,7 @@
 #include <ompl/geometric/planners/sst/SST.h>
 #include <ompl/geometric/planners/stride/STRIDE.h>
 #include <mutex>
+#include <sstream>
 
 #include "ropras/core/Error.h"
 #include "ropras/core/NameList.h"
@@ -55,6 +63,93 @@ namespace ropras::ompl_ext
         }
 
         std::mutex registryMutex;
+
+        /// \a text as a whole number (strtod must read all of it); false otherwise
+        bool parseNumber(const std::string &text, double &value)
+        {
+            if (text.empty() || std::isspace(static_cast<unsigned char>(text[0])))
+                return false;
+            char *end = nullptr;
+            errno = 0;
+            value = std::strtod(text.c_str(), &end);
+            return end == text.c_str() + text.size() && errno != ERANGE;
+        }
+
+        /// OMPL's numeric range suggestion "lo:step:hi" or "lo:hi" -> lo, hi; false for "0,1" and enumerations
+        bool numericRange(const std::string &suggestion, double &lo, double &hi)
+        {
+            const auto first = suggestion.find(':');
+            const auto last = suggestion.rfind(':');
+            return first != std::string::npos && parseNumber(suggestion.substr(0, first), lo) &&
+                   parseNumber(suggestion.substr(last + 1), hi) && std::isfinite(lo) && std::isfinite(hi);
+        }
+
+        std::string shortNumber(double v)
+        {
+            std::ostringstream s;
+            s << v;
+            return s.str();
+        }
+
+        template <typename... T>
+        bool isParamOfType(const ompl::base::GenericParam &param)
+        {
+            return (... || (dynamic_cast<const ompl::base::SpecificParam<T> *>(&param) != nullptr));
+        }
+
+        /** A numeric parameter takes only finite numbers (whole ones for an integer parameter, 0/1/true/false for
+            a bool), and nothing below the lower end of OMPL's range suggestion (range=-1 would otherwise silently
+            mean "automatic"); a suggested upper end of at most 1 (a probability, goal_bias) is a bound too. Other
+            parameters (strings, enumerations) are left to OMPL's own parser. */
+        void checkParameterValue(const ompl::base::Planner &planner, const ompl::base::GenericParam &param,
+                                 const std::string &value)
+        {
+            const bool boolean = isParamOfType<bool>(param);
+            const bool integer =
+                isParamOfType<char, int, unsigned int, long, unsigned long, long long, unsigned long long>(param);
+            const bool real = isParamOfType<float, double, long double>(param);
+            if (!boolean && !integer && !real)
+                return;
+            const std::string where =
+                "planner " + planner.getName() + ": parameter '" + param.getName() + "' = '" + value + "'";
+            if (boolean)
+            {
+                if (value != "0" && value != "1" && value != "true" && value != "false")
+                    throw Error(where + " must be 0, 1, true or false");
+                return;
+            }
+            double v = 0.0;
+            if (!parseNumber(value, v))
+                throw Error(where + " is not a number");
+            // (OMPL's own parser cannot read "inf" or "nan" either: it throws "Failed converting string to real
+            // number", naming nothing)
+            if (!std::isfinite(v))
+                throw Error(where + " must be a finite number");
+            // the parameter's own default counts as valid, whatever the suggestion says (PRM's
+            // max_nearest_neighbors is 0, below its suggested 8:1000)
+            double current = 0.0;
+            const bool hasDefault = parseNumber(param.getValue(), current) && std::isfinite(current);
+            if (integer && v != std::floor(v))
+                throw Error(where + " must be a whole number");
+            const std::string suggestion = param.getRangeSuggestion();
+            double lo = 0.0, hi = 0.0;
+            if (numericRange(suggestion, lo, hi))
+            {
+                if (hasDefault)
+                {
+                    lo = std::min(lo, current);
+                    hi = std::max(hi, current);
+                }
+                if (v < lo)
+                    throw Error(where + " must be >= " + shortNumber(lo) + " (OMPL's range for it: " + suggestion +
+                                ")");
+                if (hi <= 1.0 && v > hi)
+                    throw Error(where + " must be <= " + shortNumber(hi) + " (OMPL's range for it: " + suggestion +
+                                ")");
+            }
+            else if (integer && v < 0.0 && !isParamOfType<char, int, long, long long>(param))
+                throw Error(where + " must be >= 0");
+        }
     }  // namespace
 
     // Own planners register themselves from their translation units through this hook.
@@ -179,7 +274,18 @@ namespace ropras::ompl_ext
                 throw Error("planner " + planner.getName() + " has no parameter '" + key +
                             "'; its parameters: " + joinNames(known));
             }
-            if (!planner.params().setParam(key, value))
+            checkParameterValue(planner, *planner.params().getParams().at(key), value);
+            bool set = false;
+            try
+            {
+                set = planner.params().setParam(key, value);
+            }
+            catch (const std::exception &e)  // OMPL's number parser throws std::runtime_error, naming nothing
+            {
+                throw Error("planner " + planner.getName() + ": parameter '" + key + "' = '" + value +
+                            "': " + e.what());
+            }
+            if (!set)
                 throw Error("planner " + planner.getName() + ": cannot set parameter '" + key + "' to '" + value + "'");
         }
     }

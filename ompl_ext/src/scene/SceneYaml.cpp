@@ -6,8 +6,10 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
+#include <vector>
 
 #include "ropras/core/Error.h"
 
@@ -34,11 +36,46 @@ namespace ropras::ompl_ext
                 throw Error(msg.str());
             }
 
+            /** yaml-cpp keeps one of two equal keys of a mapping without a word: a scene whose second `world:` or
+                request whose second `position:` silently wins or loses. Every mapping is checked (iteratively: no
+                recursion depth to exhaust). */
+            void rejectDuplicateKeys(const YAML::Node &root) const
+            {
+                constexpr std::size_t MAX_NODES = 50000000;  // aliases can make a small file a huge tree
+                std::vector<YAML::Node> pending{root};
+                for (std::size_t visited = 0; !pending.empty(); ++visited)
+                {
+                    const YAML::Node node = pending.back();
+                    pending.pop_back();
+                    if (visited > MAX_NODES)
+                        fail(
+                            root, "document",
+                            "more than " + std::to_string(MAX_NODES) + " YAML nodes (aliases repeating a large node?)");
+                    if (node.IsSequence())
+                        for (const YAML::Node &item : node)
+                            pending.push_back(item);
+                    if (!node.IsMap())
+                        continue;
+                    std::map<std::string, int> lines;
+                    for (const auto &entry : node)
+                    {
+                        const std::string key = entry.first.IsScalar() ? entry.first.Scalar() : "";
+                        const auto [it, fresh] = lines.emplace(key, entry.first.Mark().line + 1);
+                        if (!fresh && entry.first.IsScalar())
+                            fail(entry.first, "key '" + key + "'",
+                                 "given twice in one mapping (first on line " + std::to_string(it->second) + ")");
+                        pending.push_back(entry.second);
+                    }
+                }
+            }
+
             YAML::Node parse(const std::string &text) const
             {
                 try
                 {
-                    return YAML::Load(text);
+                    YAML::Node root = YAML::Load(text);
+                    rejectDuplicateKeys(root);
+                    return root;
                 }
                 catch (const YAML::Exception &e)
                 {

@@ -33,8 +33,9 @@ namespace ropras::pomdp
         /** \brief Like get() for a count: throws ropras::Error if the value is negative or not an integer. */
         std::size_t getCount(const std::string &name, std::size_t fallback) const;
 
-        /** \brief Throws ropras::Error naming every parameter that no get() read (\a context names the
-            reader, e.g. "solver ropras3 on model tiger"); names in \a exempt are not checked. */
+        /** \brief Throws ropras::Error naming every parameter that no get() read and listing the valid names
+            (those read, and \a exempt) (\a context names the reader, e.g. "solver ropras3 on model tiger");
+            names in \a exempt are not checked. */
         void requireAllUsed(const std::string &context, const std::set<std::string> &exempt = {}) const;
 
         const std::map<std::string, double> &values() const { return values_; }

@@ -12,6 +12,7 @@
 #include "ropras/core/NameList.h"
 #include "ropras/pomdp/BPlanSolver.h"
 #include "ropras/pomdp/ParameterMap.h"
+#include "ropras/pomdp/ParticleFilter.h"
 #include "ropras/pomdp/PomcpSolver.h"
 #include "ropras/pomdp/RandomMacroPolicy.h"
 #include "ropras/pomdp/RbssSolver.h"
@@ -150,7 +151,10 @@ namespace ropras::pomdp
     }
 
     /** \brief Builds solver \a name (ropras3, refbasic, pomcp, rpomcp, bplan, rbss) for a model. \a params
-        must already contain the defaults (withDefaults()); unknown solver names throw ropras::Error. */
+        must already contain the defaults (withDefaults()). Unknown solver names throw ropras::Error, and so does
+        a parameter that neither the solver, its reference policy, the particle filter
+        (ParticleFilterSettings::fromParameters) nor the model's defaults know: a misspelt name ("dpth") is an
+        error listing the valid names, never silently the default. */
     template <class M>
     std::unique_ptr<Solver<M>> makeSolver(const std::string &name, const ModelComponents<M> &components,
                                           const ParameterMap &params)
@@ -165,7 +169,15 @@ namespace ropras::pomdp
         {
             throw Error("unknown solver \"" + name + "\" (known: " + joinKeys(table) + ")");
         }
-        return it->second(components, params);
+        auto solver = it->second(components, params);
+        ParticleFilterSettings::fromParameters(params);  // the filter's names are valid for every solver
+        std::set<std::string> exempt;                    // the model's defaults: not read by every solver
+        for (const auto &entry : components.defaults)
+        {
+            exempt.insert(entry.first);
+        }
+        params.requireAllUsed("solver " + name, exempt);
+        return solver;
     }
 }  // namespace ropras::pomdp
 
