@@ -355,7 +355,7 @@ namespace
         app.add_option("--json", args->json, "write the medians as JSON");
         app.add_option("--repeat", args->repeat, "repetitions (medians are reported)")
             ->capture_default_str()
-            ->check(ropras::bin::POSITIVE_COUNT);
+            ->check(ropras::bin::REPEATS);
         app.add_option("--configs", args->configs, "random configurations per scene")
             ->capture_default_str()
             ->check(ropras::bin::POSITIVE_COUNT);
@@ -374,7 +374,7 @@ namespace
         app.add_option("--backend", args->backend, "best, scalar or avx2")->capture_default_str();
         app.add_option("--clock", args->clock, "wall (steady clock) or cpu (thread CPU time: use on a loaded machine)")
             ->capture_default_str();
-        app.add_option("--seed", args->seed, "random seed")->capture_default_str();
+        app.add_option("--seed", args->seed, "random seed")->capture_default_str()->check(ropras::bin::SEED32);
         return [args] { return run(*args); };
     }
 

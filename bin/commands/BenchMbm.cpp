@@ -508,8 +508,8 @@ namespace
         app.add_option("--checkers", a->checkers, "subset of ropras,fcl_sphere,fcl_mesh")->delimiter(',');
         app.add_option("--categories", a->categories, "only these categories")->delimiter(',');
         app.add_option("--limit", a->limit, "at most N problems per category (0: all)")
-            ->check(ropras::bin::NON_NEGATIVE_COUNT);
-        app.add_option("--repeat", a->repeat, "runs per problem")
+            ->check(ropras::bin::countCheck(0, 4294967295ULL, "COUNT"));
+        app.add_option("--repeat", a->repeat, "runs per problem (at most 10^6)")
             ->capture_default_str()
             ->check(ropras::bin::POSITIVE_COUNT);
         app.add_option("--time", a->time, "time limit per plan (s)")
@@ -518,7 +518,7 @@ namespace
         app.add_option("--resolution", a->resolution, "motion-check joint step (rad)")
             ->capture_default_str()
             ->check(ropras::bin::POSITIVE_NUMBER);
-        app.add_option("--seed", a->seed, "OMPL random seed")->capture_default_str();
+        app.add_option("--seed", a->seed, "OMPL random seed")->capture_default_str()->check(ropras::bin::SEED32);
         app.add_flag("!--no-simplify", a->simplify, "skip path simplification");
         app.add_option("--json", a->json, "write the results as JSON");
         app.add_option("--ompl-log", a->omplLog, "write an OMPL benchmark log (ompl_benchmark_statistics.py)");

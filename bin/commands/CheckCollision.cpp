@@ -21,6 +21,9 @@ namespace
     namespace fs = std::filesystem;
     using namespace ropras::ompl_ext;
 
+    /// the largest --samples / --mesh-samples
+    constexpr std::uint64_t MAX_SAMPLES = 1000000000;
+
     struct Args
     {
         std::string urdf, srdf, scenes, meshUrdf;
@@ -197,15 +200,16 @@ namespace
             ->delimiter(',');
         app.add_option("--scenes", a->scenes, "a MoveIt PlanningScene YAML, or a folder searched recursively")
             ->required();
-        app.add_option("--samples", a->samples, "random configurations in total")
+        // checked a chunk at a time (memory does not grow with the count); time does, about 10 us per sample
+        app.add_option("--samples", a->samples, "random configurations in total (at most 10^9)")
             ->capture_default_str()
-            ->check(ropras::bin::POSITIVE_COUNT);
+            ->check(ropras::bin::countCheck(1, MAX_SAMPLES, "COUNT"));
         app.add_option("--mesh-urdf", a->meshUrdf, "the same robot with mesh collision geometry (FCL mesh comparison)")
             ->check(CLI::ExistingFile);
         app.add_option("--mesh-samples", a->meshSamples,
-                       "configurations for the mesh comparison (default min(samples, 5000))")
-            ->check(ropras::bin::NON_NEGATIVE_COUNT);
-        app.add_option("--seed", a->seed, "random seed")->capture_default_str();
+                       "configurations for the mesh comparison (default min(samples, 5000), at most 10^9)")
+            ->check(ropras::bin::countCheck(0, MAX_SAMPLES, "COUNT"));
+        app.add_option("--seed", a->seed, "random seed")->capture_default_str()->check(ropras::bin::SEED);
         app.add_option("--tolerance", a->tolerance, "contact tolerance (m) within which disagreements are accepted")
             ->capture_default_str()
             ->check(ropras::bin::NON_NEGATIVE_NUMBER);

@@ -259,7 +259,7 @@ namespace
         app.add_option("--samples", a->samples, "random configurations")
             ->capture_default_str()
             ->check(ropras::bin::POSITIVE_COUNT);
-        app.add_option("--seed", a->seed, "random seed")->capture_default_str();
+        app.add_option("--seed", a->seed, "random seed")->capture_default_str()->check(ropras::bin::SEED);
         return [a] { return run(*a); };
     }
 

@@ -116,13 +116,13 @@ namespace
         app.add_option("--param", args->params, "planner parameter key=value (repeatable)");
         app.add_option("--time", args->time, "planning time limit (s)")
             ->capture_default_str()
-            ->check(ropras::bin::POSITIVE_NUMBER);
+            ->check(ropras::bin::PLAN_SECONDS);
         app.add_option("--resolution", args->resolution, "motion-check joint step (rad)")
             ->capture_default_str()
             ->check(ropras::bin::POSITIVE_NUMBER);
         app.add_flag("--simplify", args->simplify, "simplify the path (OMPL's simplifySolution)");
         app.add_option("--out", args->out, "write the joint-space path as CSV");
-        app.add_option("--seed", args->seed, "OMPL random seed")->capture_default_str();
+        app.add_option("--seed", args->seed, "OMPL random seed")->capture_default_str()->check(ropras::bin::SEED32);
         return [args] { return run(*args); };
     }
 

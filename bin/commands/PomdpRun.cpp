@@ -139,21 +139,21 @@ namespace
         // CLI11 reads "-1" into an unsigned option as 2^64 - 1: counts are range-checked as numbers first
         app.add_option("--episodes", o->episodes, "Number of episodes")
             ->capture_default_str()
-            ->check(ropras::bin::POSITIVE_COUNT);
-        app.add_option("--steps", o->steps, "Maximum primitive steps per episode")
+            ->check(ropras::bin::EPISODES);
+        app.add_option("--steps", o->steps, "Maximum primitive steps per episode (at most 10^7)")
             ->capture_default_str()
-            ->check(ropras::bin::POSITIVE_COUNT);
-        app.add_option("--simulations", o->simulations, "Simulations per planning call (0 = no limit)")
+            ->check(ropras::bin::countCheck(1, 10000000, "COUNT"));
+        app.add_option("--simulations", o->simulations, "Simulations per planning call (0 = no limit; at most 10^9)")
             ->capture_default_str()
-            ->check(ropras::bin::NON_NEGATIVE_COUNT);
-        app.add_option("--seconds", o->seconds, "Seconds per planning call (0 = no limit)")
+            ->check(ropras::bin::SIMULATIONS_OR_ZERO);
+        app.add_option("--seconds", o->seconds, "Seconds per planning call (0 = no limit; at most 86400)")
             ->capture_default_str()
-            ->check(ropras::bin::NON_NEGATIVE_NUMBER);
+            ->check(ropras::bin::PLAN_SECONDS_OR_ZERO);
         app.add_option("--planning-particles", o->planningParticles,
-                       "Particles handed to the solver per plan (0 = the filter's)")
+                       "Particles handed to the solver per plan (0 = the filter's; memory is checked)")
             ->capture_default_str()
             ->check(ropras::bin::NON_NEGATIVE_COUNT);
-        app.add_option("--seed", o->seed, "Seed of the first episode")->capture_default_str();
+        app.add_option("--seed", o->seed, "Seed of the first episode")->capture_default_str()->check(ropras::bin::SEED);
         app.add_option("--param", o->params, "Solver / filter / model parameter name=value (repeatable)");
         app.add_option("--json", o->json, "Write the summary and per-episode results as JSON");
         app.add_flag("--list-models", o->listModels, "List the registered models and exit");

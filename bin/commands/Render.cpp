@@ -82,7 +82,7 @@ namespace
         app.add_option("--steps", o->steps, "Belief steps to draw, e.g. 0,50,100 (default: every recorded belief)");
         app.add_option("--width", o->width, "Width of the map in pixels")
             ->capture_default_str()
-            ->check(ropras::bin::numberCheck(50.0, false, false, "WIDTH >= 50"));
+            ->check(ropras::bin::numberCheck(50.0, false, false, "WIDTH >= 50", 100000.0));
         return [o] { return run(*o); };
     }
 

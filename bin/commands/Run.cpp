@@ -221,6 +221,16 @@ namespace
                       << " episodes owns no episode\n";
             return 0;
         }
+        std::size_t capped = 0;
+        for (const auto &record : records)
+            capped += record.value("memory_capped_plans", std::size_t(0));
+        if (capped > 0)
+        {
+            std::cerr << "ropras run: warning: " << capped
+                      << " planning calls stopped early because the search tree reached its memory cap (solver "
+                         "parameter max_tree_mb, default 1024 MiB per thread; see memory_capped_plans in the "
+                         "records)\n";
+        }
         sc::ResultTable table;
         for (std::size_t i = 0; i < records.size(); ++i)
         {
@@ -245,19 +255,21 @@ namespace
             ->capture_default_str();
         app.add_option("--episodes", o->episodes, "Episodes of the experiment (all shards together)")
             ->capture_default_str()
-            ->check(ropras::bin::POSITIVE_COUNT);
-        auto *planTime = app.add_option("--plan-time", o->planTime,
-                                        "Seconds per planning call (default: the scenario's, a tenth of the paper's)")
-                             ->check(ropras::bin::POSITIVE_NUMBER);
-        auto *sims = app.add_option("--sims", o->sims, "Simulations per planning call (exactly reproducible)")
-                         ->check(ropras::bin::POSITIVE_COUNT);
+            ->check(ropras::bin::EPISODES);
+        auto *planTime =
+            app.add_option("--plan-time", o->planTime,
+                           "Seconds per planning call (default: the scenario's, a tenth of the paper's; at most 86400)")
+                ->check(ropras::bin::PLAN_SECONDS);
+        auto *sims =
+            app.add_option("--sims", o->sims, "Simulations per planning call (exactly reproducible; at most 10^9)")
+                ->check(ropras::bin::SIMULATIONS);
         planTime->excludes(sims);
         app.add_option("--seed", o->seed, "Run seed; episode e runs with a seed mixed from (seed, e)")
             ->capture_default_str()
-            ->check(ropras::bin::NON_NEGATIVE_COUNT);
-        app.add_option("--threads", o->threads, "Worker threads (0 = hardware concurrency)")
+            ->check(ropras::bin::SEED);
+        app.add_option("--threads", o->threads, "Worker threads (0 = hardware concurrency; at most 1024)")
             ->capture_default_str()
-            ->check(ropras::bin::NON_NEGATIVE_COUNT);
+            ->check(ropras::bin::countCheck(0, 1024, "COUNT"));
         app.add_option("--shard", o->shard, "Run only episodes e with e % N == i (i/N, e.g. 3/10)")
             ->capture_default_str();
         app.add_option("--out", o->out, "Append one JSON line per episode to this file");
