@@ -10,6 +10,7 @@
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
+#include "ropras/core/InputFile.h"
 #include "ropras/pomdp/ModelRegistry.h"
 
 namespace
@@ -104,7 +105,15 @@ namespace
                   << "  terminal episodes   " << terminal << "\n"
                   << "  invalid plans       " << invalid << ", filter depletions " << depletions << "\n"
                   << "  simulations         " << search.simulations << ", reference plans " << search.referenceRequested
-                  << " (failed " << search.referenceFailed << ")\n";
+                  << " (failed " << search.referenceFailed << ")\n"
+                  << "  tree memory         largest " << ropras::formatBytes(search.treeBytes) << ", "
+                  << search.memoryCapped << " plans stopped at the cap (--param max_tree_mb)\n";
+        if (search.memoryCapped > 0)
+        {
+            std::cerr << "ropras pomdp-run: warning: " << search.memoryCapped
+                      << " planning calls stopped early because the search tree reached its memory cap "
+                         "(solver parameter max_tree_mb, default 1024 MiB)\n";
+        }
         if (!o.json.empty())
         {
             nlohmann::json out{{"model", o.model},
@@ -120,6 +129,8 @@ namespace
                                {"simulations", search.simulations},
                                {"reference_requested", search.referenceRequested},
                                {"reference_failed", search.referenceFailed},
+                               {"memory_capped_plans", search.memoryCapped},
+                               {"tree_bytes_max", search.treeBytes},
                                {"episodes", episodes}};
             std::ofstream file(o.json);
             if (!file)
