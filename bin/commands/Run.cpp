@@ -154,9 +154,7 @@ namespace
         std::size_t successes = 0;
         if (!o.quiet)
         {
-            std::size_t owned = 0;
-            for (std::size_t e = 0; e < settings.episodes; ++e)
-                owned += settings.shard.owns(e) ? 1 : 0;
+            const std::size_t owned = settings.shard.ownedCount(settings.episodes);
             const auto &b = resolved.budget;
             std::cerr << "ropras run: " << scenario->name() << " / " << o.solver << ", " << owned << " of "
                       << settings.episodes << " episodes (shard " << settings.shard.str() << "), "
