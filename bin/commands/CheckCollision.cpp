@@ -12,6 +12,7 @@
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
+#include "ropras/core/InputFile.h"
 #include "ropras/ompl_ext/collision/CrossCheck.h"
 #include "ropras/ompl_ext/collision/FclReferenceChecker.h"
 #include "ropras/ompl_ext/scene/SceneYaml.h"
@@ -37,6 +38,7 @@ namespace
     /// true when the file has a top-level `world:` key (a PlanningScene rather than a request)
     bool looksLikeScene(const fs::path &path)
     {
+        ropras::checkInputFile(path.string(), "--scenes file");
         std::ifstream in(path);
         static const std::regex world(R"(^world\s*:)");
         for (std::string line; std::getline(in, line);)
@@ -49,13 +51,15 @@ namespace
     {
         std::vector<CrossCheckScene> scenes;
         const fs::path root(where);
-        if (fs::is_regular_file(root))
+        std::error_code ec;
+        if (!fs::exists(root, ec))
+            throw ropras::Error("--scenes '" + where + "': no such file or folder");
+        if (!fs::is_directory(root, ec))
         {
+            // a file (loadPlanningScene refuses a special file such as /dev/zero, or one above the size limit)
             scenes.push_back({root.filename().string(), loadPlanningScene(root.string())});
             return scenes;
         }
-        if (!fs::is_directory(root))
-            throw ropras::Error("--scenes '" + where + "': no such file or folder");
         std::vector<fs::path> files;
         for (const auto &entry : fs::recursive_directory_iterator(root))
         {

@@ -15,6 +15,7 @@
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
+#include "ropras/core/InputFile.h"
 #include "ropras/scenarios/ExperimentRunner.h"
 #include "ropras/scenarios/ResultTable.h"
 #include "ropras/scenarios/ScenarioRegistry.h"
@@ -66,11 +67,7 @@ namespace
         {
             return options;
         }
-        std::ifstream file(path);
-        if (!file)
-        {
-            throw ropras::Error("--config: cannot read \"" + path + "\"");
-        }
+        const std::string text = ropras::readInputFile(path, "--config");
         try
         {
             options.overrides = nlohmann::json::parse(file);

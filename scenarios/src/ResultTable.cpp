@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "ropras/core/Error.h"
+#include "ropras/core/InputFile.h"
 
 namespace ropras::scenarios
 {
@@ -331,6 +332,7 @@ namespace ropras::scenarios
 
     std::size_t ResultTable::addFile(const std::string &path)
     {
+        checkInputFile(path, "results file");
         std::ifstream file(path);
         if (!file)
         {

@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <locale>
 #include <random>
@@ -22,6 +21,7 @@
 #include "model/EnclosingSphere.h"
 #include "model/SrdfReader.h"
 #include "ropras/core/Error.h"
+#include "ropras/core/InputFile.h"
 #include "ropras/ompl_ext/model/MeshLoader.h"
 
 namespace ropras::ompl_ext
@@ -29,23 +29,6 @@ namespace ropras::ompl_ext
     namespace
     {
         constexpr double PI = 3.14159265358979323846;
-
-        std::string readTextFile(const std::string &path, const char *what)
-        {
-            std::error_code ec;
-            if (!std::filesystem::is_regular_file(path, ec))
-            {
-                throw Error(std::string(what) + " '" + path + "': file not found");
-            }
-            std::ifstream in(path, std::ios::binary);
-            if (!in)
-            {
-                throw Error(std::string(what) + " '" + path + "': cannot open the file");
-            }
-            std::ostringstream ss;
-            ss << in.rdbuf();
-            return ss.str();
-        }
 
         Eigen::Isometry3d toIsometry(const urdf::Pose &pose)
         {
@@ -870,8 +853,8 @@ namespace ropras::ompl_ext
     std::shared_ptr<const RobotModel> RobotModel::fromUrdfFile(const std::string &urdfPath, const std::string &srdfPath,
                                                                const Options &options)
     {
-        const std::string urdfXml = readTextFile(urdfPath, "URDF");
-        const std::string srdfXml = srdfPath.empty() ? std::string() : readTextFile(srdfPath, "SRDF");
+        const std::string urdfXml = readInputFile(urdfPath, "URDF");
+        const std::string srdfXml = srdfPath.empty() ? std::string() : readInputFile(srdfPath, "SRDF");
         if (!srdfPath.empty() && srdfXml.find_first_not_of(" \t\r\n") == std::string::npos)
         {
             throw Error("SRDF '" + srdfPath + "': the file is empty");

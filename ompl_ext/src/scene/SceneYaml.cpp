@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
 #include <set>
 #include <sstream>
 
 #include "ropras/core/Error.h"
+#include "ropras/core/InputFile.h"
 
 namespace ropras::ompl_ext
 {
@@ -351,18 +351,6 @@ namespace ropras::ompl_ext
             }
             return request;
         }
-
-        std::string readFile(const std::string &path)
-        {
-            std::ifstream in(path, std::ios::binary);
-            if (!in)
-                throw Error(path + ": cannot open file");
-            std::ostringstream text;
-            text << in.rdbuf();
-            if (in.bad())
-                throw Error(path + ": cannot read file");
-            return text.str();
-        }
     }  // namespace
 
     Environment planningSceneFromString(const std::string &yaml, const std::string &sourceName)
@@ -373,7 +361,7 @@ namespace ropras::ompl_ext
 
     Environment loadPlanningScene(const std::string &path)
     {
-        return planningSceneFromString(readFile(path), path);
+        return planningSceneFromString(readInputFile(path, "scene"), path);
     }
 
     MotionPlanRequest motionPlanRequestFromString(const std::string &yaml, const std::string &sourceName)
@@ -384,6 +372,6 @@ namespace ropras::ompl_ext
 
     MotionPlanRequest loadMotionPlanRequest(const std::string &path)
     {
-        return motionPlanRequestFromString(readFile(path), path);
+        return motionPlanRequestFromString(readInputFile(path, "request"), path);
     }
 }  // namespace ropras::ompl_ext

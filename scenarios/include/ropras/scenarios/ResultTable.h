@@ -58,7 +58,8 @@ namespace ropras::scenarios
             ropras::Error naming "name:line". Returns the number of records read. */
         std::size_t addJsonLines(std::istream &in, const std::string &name);
 
-        /** \brief addJsonLines() of a file; throws ropras::Error when it cannot be opened. */
+        /** \brief addJsonLines() of a file; throws ropras::Error when it cannot be opened, is not a regular file
+            or is larger than the input size limit (ropras::checkInputFile()). */
         std::size_t addFile(const std::string &path);
 
         /// episodes in the table (duplicates counted once)
