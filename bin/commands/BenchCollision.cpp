@@ -15,6 +15,8 @@
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
+#include "ropras/core/InputFile.h"
+#include "ropras/core/MemoryLimit.h"
 #include "ropras/ompl_ext/collision/CollisionChecker.h"
 #include "ropras/ompl_ext/collision/FclReferenceChecker.h"
 #include "ropras/ompl_ext/scene/SceneYaml.h"
@@ -121,6 +123,18 @@ namespace
             for (std::size_t j = 0; j < dof; ++j)
                 q[j] = std::uniform_real_distribution<double>(robot->joints()[j].lower, robot->joints()[j].upper)(rng);
         };
+        // every scene keeps its configurations twice (all, and split by verdict) and its edges (two ends)
+        const std::string joints =
+            " per scene x " + std::to_string(paths.size()) + " scenes, " + std::to_string(dof) + " joints";
+        const std::uint64_t configBytes = ropras::checkedBytes(a.configs, paths.size() * 2 * dof * sizeof(double),
+                                                               "--configs " + std::to_string(a.configs) + joints);
+        const std::uint64_t edgeBytes = ropras::checkedBytes(a.edges, paths.size() * 4 * dof * sizeof(double),
+                                                             "--edges " + std::to_string(a.edges) + joints);
+        if (configBytes + edgeBytes > ropras::memoryLimit())
+            throw Error("--configs " + std::to_string(a.configs) + " and --edges " + std::to_string(a.edges) +
+                        " together ask for " + ropras::formatBytes(configBytes + edgeBytes) +
+                        ", more than the memory limit " + ropras::formatBytes(ropras::memoryLimit()) +
+                        " (ropras --max-memory)");
         std::vector<Scene> scenes;
         for (const std::string &path : paths)
         {

@@ -148,7 +148,7 @@ namespace
         app.add_option("--model", o->model, "Registered POMDP model")->capture_default_str();
         app.add_option("--solver", o->solver, "ropras3, refbasic, pomcp, rpomcp, bplan or rbss")->capture_default_str();
         // CLI11 reads "-1" into an unsigned option as 2^64 - 1: counts are range-checked as numbers first
-        app.add_option("--episodes", o->episodes, "Number of episodes")
+        app.add_option("--episodes", o->episodes, "Number of episodes (at most 10^6)")
             ->capture_default_str()
             ->check(ropras::bin::EPISODES);
         app.add_option("--steps", o->steps, "Maximum primitive steps per episode (at most 10^7)")

@@ -33,6 +33,8 @@ namespace ropras::pomdp
         unsigned macroActionsPerNode{8};
         /** \brief Measure time spent in the model and in the reference policy. */
         bool profile{false};
+        /** \brief Memory cap of the tree (MiB): the search stops there and says so (SearchStatistics). */
+        double maxTreeMegabytes{detail::DEFAULT_MAX_TREE_MB};
 
         /** \brief Reads ucb_c, depth, rollout_steps, macro_actions, profile, max_tree_mb; throws ropras::Error for bad
          * values. */
@@ -40,10 +42,13 @@ namespace ropras::pomdp
         {
             PomcpSettings s;
             s.explorationConstant = p.get("ucb_c", s.explorationConstant);
-            s.maxDepth = static_cast<unsigned>(p.getCount("depth", s.maxDepth));
-            s.rolloutSteps = static_cast<unsigned>(p.getCount("rollout_steps", s.rolloutSteps));
-            s.macroActionsPerNode = static_cast<unsigned>(p.getCount("macro_actions", s.macroActionsPerNode));
+            s.maxDepth = static_cast<unsigned>(p.getCount("depth", s.maxDepth, ParameterMap::MAX_UNSIGNED));
+            s.rolloutSteps =
+                static_cast<unsigned>(p.getCount("rollout_steps", s.rolloutSteps, ParameterMap::MAX_UNSIGNED));
+            s.macroActionsPerNode =
+                static_cast<unsigned>(p.getCount("macro_actions", s.macroActionsPerNode, ParameterMap::MAX_UNSIGNED));
             s.profile = p.getCount("profile", 0) != 0;
+            s.maxTreeMegabytes = detail::maxTreeMegabytes(p, "POMCP");
             s.validate();
             return s;
         }

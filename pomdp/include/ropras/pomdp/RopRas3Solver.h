@@ -39,6 +39,8 @@ namespace ropras::pomdp
         bool sampleAction{false};
         /** \brief Measure time spent in the model and in the reference policy (two clock reads per call). */
         bool profile{false};
+        /** \brief Memory cap of the tree (MiB): the search stops there and says so (SearchStatistics). */
+        double maxTreeMegabytes{detail::DEFAULT_MAX_TREE_MB};
 
         /** \brief Reads eta, beta_a, alpha_a, depth, rollout_steps, max_particles, sample_action, profile,
             max_tree_mb;
@@ -49,11 +51,14 @@ namespace ropras::pomdp
             s.eta = p.get("eta", s.eta);
             s.betaA = p.get("beta_a", s.betaA);
             s.alphaA = p.get("alpha_a", s.alphaA);
-            s.maxDepth = static_cast<unsigned>(p.getCount("depth", s.maxDepth));
-            s.rolloutSteps = static_cast<unsigned>(p.getCount("rollout_steps", s.rolloutSteps));
-            s.maxParticlesPerNode = static_cast<unsigned>(p.getCount("max_particles", s.maxParticlesPerNode));
+            s.maxDepth = static_cast<unsigned>(p.getCount("depth", s.maxDepth, ParameterMap::MAX_UNSIGNED));
+            s.rolloutSteps =
+                static_cast<unsigned>(p.getCount("rollout_steps", s.rolloutSteps, ParameterMap::MAX_UNSIGNED));
+            s.maxParticlesPerNode =
+                static_cast<unsigned>(p.getCount("max_particles", s.maxParticlesPerNode, ParameterMap::MAX_UNSIGNED));
             s.sampleAction = p.getCount("sample_action", 0) != 0;
             s.profile = p.getCount("profile", 0) != 0;
+            s.maxTreeMegabytes = detail::maxTreeMegabytes(p, "ROP-RAS3");
             s.validate();
             return s;
         }
