@@ -14,6 +14,7 @@
 
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
+#include "OutputChecks.h"
 #include "ropras/core/Error.h"
 #include "ropras/core/InputFile.h"
 #include "ropras/core/MemoryLimit.h"
@@ -97,6 +98,7 @@ namespace
 
     int run(const BenchArgs &a)
     {
+        ropras::bin::refuseOverwritingInputs("--json", a.json, {a.urdf, a.srdf, a.meshUrdf});
         if (a.clock != "wall" && a.clock != "cpu")
             throw Error("bench-collision: unknown --clock '" + a.clock + "' (wall, cpu)");
         useCpuClock = a.clock == "cpu";

@@ -20,6 +20,7 @@
 
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
+#include "OutputChecks.h"
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/collision/FclReferenceChecker.h"
 #include "ropras/ompl_ext/ompl/PlannerRegistry.h"
@@ -285,6 +286,8 @@ namespace
 
     int run(const Args &a)
     {
+        for (const auto &[option, out] : {std::pair{"--json", a.json}, std::pair{"--ompl-log", a.omplLog}})
+            ropras::bin::refuseOverwritingInputs(option, out, {a.urdf, a.srdf, a.meshUrdf});
         ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
         ompl::RNG::setSeed(a.seed);
         const auto params = ropras::bin::keyValueOptions(a.params, "--param");
@@ -511,7 +514,7 @@ namespace
             ->check(ropras::bin::countCheck(0, 4294967295ULL, "COUNT"));
         app.add_option("--repeat", a->repeat, "runs per problem (at most 10^6)")
             ->capture_default_str()
-            ->check(ropras::bin::POSITIVE_COUNT);
+            ->check(ropras::bin::REPEATS);
         app.add_option("--time", a->time, "time limit per plan (s)")
             ->capture_default_str()
             ->check(ropras::bin::POSITIVE_NUMBER);

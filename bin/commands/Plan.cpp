@@ -10,6 +10,7 @@
 
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
+#include "OutputChecks.h"
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/ompl/PlannerRegistry.h"
 #include "ropras/ompl_ext/ompl/PlanningContext.h"
@@ -37,6 +38,7 @@ namespace
 
     int run(const PlanArgs &a)
     {
+        ropras::bin::refuseOverwritingInputs("--out", a.out, {a.urdf, a.srdf, a.scene, a.request});
         ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
         ompl::RNG::setSeed(a.seed);
         auto environment = std::make_shared<Environment>(loadPlanningScene(a.scene));
@@ -114,7 +116,7 @@ namespace
             ->check(CLI::ExistingFile);
         app.add_option("--planner", args->planner, "planner name (see `ropras planners`)")->capture_default_str();
         app.add_option("--param", args->params, "planner parameter key=value (repeatable)");
-        app.add_option("--time", args->time, "planning time limit (s)")
+        app.add_option("--time", args->time, "planning time limit (s, at most 86400)")
             ->capture_default_str()
             ->check(ropras::bin::PLAN_SECONDS);
         app.add_option("--resolution", args->resolution, "motion-check joint step (rad)")

@@ -8,6 +8,7 @@
 
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
+#include "OutputChecks.h"
 #include "ropras/core/Error.h"
 #include "ropras/scenarios/SvgRenderer.h"
 
@@ -51,6 +52,7 @@ namespace
         {
             options.beliefSteps = stepList(o.steps);
         }
+        ropras::bin::refuseOverwritingInputs("--out", o.out, {o.recording});
         const auto recording = ropras::scenarios::loadRecording(o.recording);
         const std::string svg = ropras::scenarios::renderSvg(recording, options, o.recording);
         std::string out = o.out;
@@ -62,6 +64,7 @@ namespace
                                                                                            : o.recording) +
                   ".svg";
         }
+        ropras::bin::refuseOverwritingInputs("--out", out, {o.recording});
         std::ofstream file(out);
         file << svg;
         if (!file)

@@ -14,6 +14,7 @@
 
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
+#include "OutputChecks.h"
 #include "ropras/core/Error.h"
 #include "ropras/core/InputFile.h"
 #include "ropras/scenarios/ExperimentRunner.h"
@@ -88,6 +89,7 @@ namespace
     int run(const RunOptions &o)
     {
         namespace sc = ropras::scenarios;
+        ropras::bin::refuseOverwritingInputs("--out", o.out, {o.config});
         ompl::msg::setLogLevel(ompl::msg::LOG_WARN);  // OMPL's per-plan info lines would drown the progress
         const auto &registry = sc::scenarioRegistry();
         if (o.listScenarios)
