@@ -18,6 +18,7 @@
 #include "ropras/core/Error.h"
 #include "ropras/core/InputFile.h"
 #include "ropras/scenarios/ExperimentRunner.h"
+#include "ropras/scenarios/JsonLinesAppender.h"
 #include "ropras/scenarios/ResultTable.h"
 #include "ropras/scenarios/ScenarioRegistry.h"
 
@@ -71,7 +72,7 @@ namespace
         const std::string text = ropras::readInputFile(path, "--config");
         try
         {
-            options.overrides = nlohmann::json::parse(file);
+            options.overrides = nlohmann::json::parse(text);
         }
         catch (const nlohmann::json::parse_error &e)
         {
@@ -139,13 +140,15 @@ namespace
             return 0;
         }
 
-        std::unique_ptr<std::ofstream> out;
+        std::unique_ptr<sc::JsonLinesAppender> out;
         if (!o.out.empty())
         {
-            out = std::make_unique<std::ofstream>(o.out, std::ios::app);
-            if (!*out)
+            out = std::make_unique<sc::JsonLinesAppender>(o.out, "--out");
+            if (out->repairedLine() > 0)
             {
-                throw ropras::Error("--out: cannot open \"" + o.out + "\" for appending");
+                std::cerr << "ropras run: warning: " << o.out << ":" << out->repairedLine()
+                          << " was a truncated record (an interrupted run); it is ended with a newline so that "
+                             "the new records start on their own lines (`ropras table` skips it)\n";
             }
         }
 
@@ -166,12 +169,7 @@ namespace
         {
             if (out)
             {
-                *out << record.dump() << '\n';
-                out->flush();
-                if (!*out)
-                {
-                    throw ropras::Error("--out: writing to \"" + o.out + "\" failed");
-                }
+                out->append(record.dump());
             }
         };
         callbacks.onProgress = [&](const sc::ExperimentProgress &p)
@@ -250,7 +248,7 @@ namespace
             ->check(ropras::bin::NON_NEGATIVE_NUMBER);
         app.add_option("--planner", o->planner, "OMPL planner of the reference policy (any registered name)")
             ->capture_default_str();
-        app.add_option("--episodes", o->episodes, "Episodes of the experiment (all shards together)")
+        app.add_option("--episodes", o->episodes, "Episodes of the experiment (all shards together, at most 10^6)")
             ->capture_default_str()
             ->check(ropras::bin::EPISODES);
         auto *planTime =

@@ -322,7 +322,16 @@ namespace ropras::scenarios
             }
             catch (const nlohmann::json::parse_error &e)
             {
-                throw Error(source + ": malformed JSON: " + e.what());
+                // an object cut off before its end (what a writer interrupted between its system calls leaves): the
+                // parser failed only when the line ran out, past its last byte
+                const bool truncated = line.find_first_not_of(" \t") == line.find('{') && e.byte > line.size();
+                if (!truncated)
+                {
+                    throw Error(source + ": malformed JSON: " + e.what());
+                }
+                warnings_.push_back(source + ": truncated record (" + std::to_string(line.size()) +
+                                    " bytes, cut off before its end: an interrupted run?), skipped");
+                continue;
             }
             add(record, source);
             ++count;
