@@ -1,14 +1,28 @@
 // `ropras <command> [options]`: thin front end over the library; every command lives in commands/.
 #include <algorithm>
+#include <cstdint>
 #include <iostream>
 
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
+#include "ropras/core/InputFile.h"
+#include "ropras/core/MemoryLimit.h"
 
 int main(int argc, char **argv)
 {
     CLI::App app{"ropras: long-horizon online POMDP planning for robots on OMPL"};
     app.require_subcommand(1);
+    // limits of every command (given before or after the command name): input files and count-driven memory
+    std::uint64_t maxInputSize = ropras::inputSizeLimit(), maxMemory = ropras::memoryLimit();
+    app.add_option("--max-input-size", maxInputSize,
+                   "largest input file read (URDF, SRDF, scene, request, config, JSON lines, recording, mesh), "
+                   "e.g. 512MiB")
+        ->transform(CLI::AsSizeValue(false))
+        ->default_str("256MiB");
+    app.add_option("--max-memory", maxMemory,
+                   "memory a count option may ask for (samples, configurations, particles); default: physical memory")
+        ->transform(CLI::AsSizeValue(false));
+    app.fallthrough();
     auto &registry = ropras::bin::commandRegistry();
     std::sort(registry.begin(), registry.end(), [](const auto &a, const auto &b) { return a.name < b.name; });
     std::function<int()> run;
@@ -39,6 +53,8 @@ int main(int argc, char **argv)
     }
     try
     {
+        ropras::setInputSizeLimit(maxInputSize);
+        ropras::setMemoryLimit(maxMemory);
         return run();
     }
     catch (const ropras::Error &e)

@@ -14,7 +14,10 @@
 #include "BenchClock.h"
 #include "CommandRegistry.h"
 #include "Median.h"
+#include "OutputChecks.h"
 #include "ropras/core/Error.h"
+#include "ropras/core/InputFile.h"
+#include "ropras/core/MemoryLimit.h"
 #include "ropras/ompl_ext/collision/CollisionChecker.h"
 #include "ropras/ompl_ext/collision/FclReferenceChecker.h"
 #include "ropras/ompl_ext/scene/SceneYaml.h"
@@ -121,6 +124,7 @@ namespace
 
     int run(const BenchArgs &a)
     {
+        ropras::bin::refuseOverwritingInputs("--json", a.json, {a.urdf, a.srdf, a.meshUrdf});
         benchClock.emplace(a.clock, "bench-collision");
         const auto robot = RobotModel::fromUrdfFile(a.urdf, a.srdf);
         const CollisionChecker checker(robot, parseBackend(a.backend));
@@ -154,6 +158,18 @@ namespace
                 throw Error("bench-collision: " + a.attached +
                             " attaches no object (robot_state.attached_collision_objects)");
         }
+        // every scene keeps its configurations twice (all, and split by verdict) and its edges (two ends)
+        const std::string joints =
+            " per scene x " + std::to_string(paths.size()) + " scenes, " + std::to_string(dof) + " joints";
+        const std::uint64_t configBytes = ropras::checkedBytes(a.configs, paths.size() * 2 * dof * sizeof(double),
+                                                               "--configs " + std::to_string(a.configs) + joints);
+        const std::uint64_t edgeBytes = ropras::checkedBytes(a.edges, paths.size() * 4 * dof * sizeof(double),
+                                                             "--edges " + std::to_string(a.edges) + joints);
+        if (configBytes + edgeBytes > ropras::memoryLimit())
+            throw Error("--configs " + std::to_string(a.configs) + " and --edges " + std::to_string(a.edges) +
+                        " together ask for " + ropras::formatBytes(configBytes + edgeBytes) +
+                        ", more than the memory limit " + ropras::formatBytes(ropras::memoryLimit()) +
+                        " (ropras --max-memory)");
         std::vector<Scene> scenes;
         for (const std::string &path : paths)
         {
@@ -447,7 +463,7 @@ namespace
         app.add_option("--json", args->json, "write the medians as JSON");
         app.add_option("--repeat", args->repeat, "repetitions (medians are reported)")
             ->capture_default_str()
-            ->check(ropras::bin::POSITIVE_COUNT);
+            ->check(ropras::bin::REPEATS);
         app.add_option("--configs", args->configs, "random configurations per scene")
             ->capture_default_str()
             ->check(ropras::bin::POSITIVE_COUNT);
@@ -470,7 +486,7 @@ namespace
                        "PlanningScene YAML whose robot_state.attached_collision_objects the robot holds: adds rows for "
                        "the same valid configurations with and without them, and the cost of a particle scene")
             ->check(CLI::ExistingFile);
-        app.add_option("--seed", args->seed, "random seed")->capture_default_str();
+        app.add_option("--seed", args->seed, "random seed")->capture_default_str()->check(ropras::bin::SEED32);
         return [args] { return run(*args); };
     }
 

@@ -25,6 +25,7 @@
 #include "OmplBenchmarkLog.h"
 #include "ProgressBar.h"
 #include "SequentialMotionValidator.h"
+#include "OutputChecks.h"
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/collision/FclReferenceChecker.h"
 #include "ropras/ompl_ext/collision/StateDiagnosis.h"
@@ -326,6 +327,8 @@ namespace
 
     int run(const Args &a)
     {
+        for (const auto &[option, out] : {std::pair{"--json", a.json}, std::pair{"--ompl-log", a.omplLog}})
+            ropras::bin::refuseOverwritingInputs(option, out, {a.urdf, a.srdf, a.meshUrdf});
         ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
         ompl::RNG::setSeed(a.seed);
         const auto params = ropras::bin::keyValueOptions(a.params, "--param");
@@ -468,17 +471,17 @@ namespace
         app.add_option("--checkers", a->checkers, "subset of ropras,fcl_sphere,fcl_mesh")->delimiter(',');
         app.add_option("--categories", a->categories, "only these categories")->delimiter(',');
         app.add_option("--limit", a->limit, "at most N problems per category (0: all)")
-            ->check(ropras::bin::NON_NEGATIVE_COUNT);
-        app.add_option("--repeat", a->repeat, "runs per problem")
+            ->check(ropras::bin::countCheck(0, 4294967295ULL, "COUNT"));
+        app.add_option("--repeat", a->repeat, "runs per problem (at most 10^6)")
             ->capture_default_str()
-            ->check(ropras::bin::POSITIVE_COUNT);
+            ->check(ropras::bin::REPEATS);
         app.add_option("--time", a->time, "time limit per plan (s)")
             ->capture_default_str()
             ->check(ropras::bin::POSITIVE_NUMBER);
         app.add_option("--resolution", a->resolution, "motion-check joint step (rad)")
             ->capture_default_str()
             ->check(ropras::bin::POSITIVE_NUMBER);
-        app.add_option("--seed", a->seed, "OMPL random seed")->capture_default_str();
+        app.add_option("--seed", a->seed, "OMPL random seed")->capture_default_str()->check(ropras::bin::SEED32);
         app.add_flag("!--no-simplify", a->simplify, "skip path simplification");
         app.add_option("--json", a->json, "write the results as JSON");
         app.add_option("--ompl-log", a->omplLog, "write an OMPL benchmark log (ompl_benchmark_statistics)");

@@ -117,16 +117,18 @@ namespace
         app.add_option("--model", options->model, "Registered model to benchmark")->capture_default_str();
         app.add_option("--solvers", options->solvers, "Solvers to benchmark")->capture_default_str();
         // CLI11 reads "-1" into an unsigned option as 2^64 - 1: counts are range-checked as numbers first
-        app.add_option("--simulations", options->simulations, "Simulations per planning call")
+        app.add_option("--simulations", options->simulations, "Simulations per planning call (at most 10^9)")
             ->capture_default_str()
-            ->check(ropras::bin::POSITIVE_COUNT);
-        app.add_option("--repeats", options->repeats, "Planning calls per solver")
+            ->check(ropras::bin::SIMULATIONS);
+        app.add_option("--repeats", options->repeats, "Planning calls per solver (at most 10^6)")
             ->capture_default_str()
-            ->check(ropras::bin::POSITIVE_COUNT);
-        app.add_option("--depth", options->depth, "Search depth D")
+            ->check(ropras::bin::REPEATS);
+        app.add_option("--depth", options->depth, "Search depth D (at most 2^32 - 1)")
             ->capture_default_str()
-            ->check(ropras::bin::POSITIVE_COUNT);
-        app.add_option("--seed", options->seed, "Seed of the first planning call")->capture_default_str();
+            ->check(ropras::bin::countCheck(1, 4294967295ULL, "COUNT"));
+        app.add_option("--seed", options->seed, "Seed of the first planning call")
+            ->capture_default_str()
+            ->check(ropras::bin::SEED);
         app.add_option("--param", options->params, "Extra solver parameter name=value (repeatable)");
         return [options] { return run(*options); };
     }

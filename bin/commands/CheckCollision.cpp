@@ -13,6 +13,7 @@
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
+#include "ropras/core/InputFile.h"
 #include "ropras/ompl_ext/collision/CrossCheck.h"
 #include "ropras/ompl_ext/collision/FclReferenceChecker.h"
 #include "ropras/ompl_ext/scene/SceneYaml.h"
@@ -21,6 +22,9 @@ namespace
 {
     namespace fs = std::filesystem;
     using namespace ropras::ompl_ext;
+
+    /// the largest --samples / --mesh-samples
+    constexpr std::uint64_t MAX_SAMPLES = 1000000000;
 
     struct Args
     {
@@ -35,6 +39,7 @@ namespace
     /// true when the file has a top-level `world:` key (a PlanningScene rather than a request)
     bool looksLikeScene(const fs::path &path)
     {
+        ropras::checkInputFile(path.string(), "--scenes file");
         std::ifstream in(path);
         static const std::regex world(R"(^world\s*:)");
         for (std::string line; std::getline(in, line);)
@@ -47,13 +52,15 @@ namespace
     {
         std::vector<CrossCheckScene> scenes;
         const fs::path root(where);
-        if (fs::is_regular_file(root))
+        std::error_code ec;
+        if (!fs::exists(root, ec))
+            throw ropras::Error("--scenes '" + where + "': no such file or folder");
+        if (!fs::is_directory(root, ec))
         {
+            // a file (loadPlanningScene refuses a special file such as /dev/zero, or one above the size limit)
             scenes.push_back({root.filename().string(), loadPlanningScene(root.string())});
             return scenes;
         }
-        if (!fs::is_directory(root))
-            throw ropras::Error("--scenes '" + where + "': no such file or folder");
         std::vector<fs::path> files;
         for (const auto &entry : fs::recursive_directory_iterator(root))
         {
@@ -257,15 +264,16 @@ namespace
             ->delimiter(',');
         app.add_option("--scenes", a->scenes, "a MoveIt PlanningScene YAML, or a folder searched recursively")
             ->required();
-        app.add_option("--samples", a->samples, "random configurations in total")
+        // checked a chunk at a time (memory does not grow with the count); time does, about 10 us per sample
+        app.add_option("--samples", a->samples, "random configurations in total (at most 10^9)")
             ->capture_default_str()
-            ->check(ropras::bin::POSITIVE_COUNT);
+            ->check(ropras::bin::countCheck(1, MAX_SAMPLES, "COUNT"));
         app.add_option("--mesh-urdf", a->meshUrdf, "the same robot with mesh collision geometry (FCL mesh comparison)")
             ->check(CLI::ExistingFile);
         app.add_option("--mesh-samples", a->meshSamples,
-                       "configurations for the mesh comparison (default min(samples, 5000))")
-            ->check(ropras::bin::NON_NEGATIVE_COUNT);
-        app.add_option("--seed", a->seed, "random seed")->capture_default_str();
+                       "configurations for the mesh comparison (default min(samples, 5000), at most 10^9)")
+            ->check(ropras::bin::countCheck(0, MAX_SAMPLES, "COUNT"));
+        app.add_option("--seed", a->seed, "random seed")->capture_default_str()->check(ropras::bin::SEED);
         app.add_option("--tolerance", a->tolerance, "contact tolerance (m) within which disagreements are accepted")
             ->capture_default_str()
             ->check(ropras::bin::NON_NEGATIVE_NUMBER);

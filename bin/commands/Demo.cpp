@@ -11,6 +11,7 @@
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
+#include "ropras/core/MemoryLimit.h"
 #include "ropras/ompl_ext/collision/CollisionChecker.h"
 #include "ropras/ompl_ext/collision/CrossCheck.h"
 #include "ropras/ompl_ext/collision/FclReferenceChecker.h"
@@ -158,6 +159,8 @@ namespace
         const FclSphereChecker fcl(robot);
         const std::size_t n = args.samples, dof = robot->dof();
         std::mt19937_64 rng(args.seed);
+        ropras::checkedBytes(n, dof * sizeof(double) + sizeof(bool) + sizeof(double *),
+                             "--samples " + std::to_string(n) + " (" + std::to_string(dof) + " joints)");
         std::vector<double> qs(n * dof);
         for (std::size_t k = 0; k < n; ++k)
             sampleConfiguration(*robot, rng, qs.data() + k * dof);
@@ -259,7 +262,7 @@ namespace
         app.add_option("--samples", a->samples, "random configurations")
             ->capture_default_str()
             ->check(ropras::bin::POSITIVE_COUNT);
-        app.add_option("--seed", a->seed, "random seed")->capture_default_str();
+        app.add_option("--seed", a->seed, "random seed")->capture_default_str()->check(ropras::bin::SEED);
         return [a] { return run(*a); };
     }
 

@@ -10,6 +10,7 @@
 
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
+#include "OutputChecks.h"
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/collision/StateDiagnosis.h"
 #include "ropras/ompl_ext/ompl/PlannerRegistry.h"
@@ -38,6 +39,7 @@ namespace
 
     int run(const PlanArgs &a)
     {
+        ropras::bin::refuseOverwritingInputs("--out", a.out, {a.urdf, a.srdf, a.scene, a.request});
         ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
         ompl::RNG::setSeed(a.seed);
         // the robot first: the scene may attach objects to its links (robot_state.attached_collision_objects)
@@ -120,15 +122,15 @@ namespace
             ->check(CLI::ExistingFile);
         app.add_option("--planner", args->planner, "planner name (see `ropras planners`)")->capture_default_str();
         app.add_option("--param", args->params, "planner parameter key=value (repeatable)");
-        app.add_option("--time", args->time, "planning time limit (s)")
+        app.add_option("--time", args->time, "planning time limit (s, at most 86400)")
             ->capture_default_str()
-            ->check(ropras::bin::POSITIVE_NUMBER);
+            ->check(ropras::bin::PLAN_SECONDS);
         app.add_option("--resolution", args->resolution, "motion-check joint step (rad)")
             ->capture_default_str()
             ->check(ropras::bin::POSITIVE_NUMBER);
         app.add_flag("--simplify", args->simplify, "simplify the path (OMPL's simplifySolution)");
         app.add_option("--out", args->out, "write the joint-space path as CSV");
-        app.add_option("--seed", args->seed, "OMPL random seed")->capture_default_str();
+        app.add_option("--seed", args->seed, "OMPL random seed")->capture_default_str()->check(ropras::bin::SEED32);
         return [args] { return run(*args); };
     }
 

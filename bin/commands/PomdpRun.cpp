@@ -10,6 +10,7 @@
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ropras/core/Error.h"
+#include "ropras/core/InputFile.h"
 #include "ropras/pomdp/ModelRegistry.h"
 
 namespace
@@ -104,7 +105,15 @@ namespace
                   << "  terminal episodes   " << terminal << "\n"
                   << "  invalid plans       " << invalid << ", filter depletions " << depletions << "\n"
                   << "  simulations         " << search.simulations << ", reference plans " << search.referenceRequested
-                  << " (failed " << search.referenceFailed << ")\n";
+                  << " (failed " << search.referenceFailed << ")\n"
+                  << "  tree memory         largest " << ropras::formatBytes(search.treeBytes) << ", "
+                  << search.memoryCapped << " plans stopped at the cap (--param max_tree_mb)\n";
+        if (search.memoryCapped > 0)
+        {
+            std::cerr << "ropras pomdp-run: warning: " << search.memoryCapped
+                      << " planning calls stopped early because the search tree reached its memory cap "
+                         "(solver parameter max_tree_mb, default 1024 MiB)\n";
+        }
         if (!o.json.empty())
         {
             nlohmann::json out{{"model", o.model},
@@ -120,6 +129,8 @@ namespace
                                {"simulations", search.simulations},
                                {"reference_requested", search.referenceRequested},
                                {"reference_failed", search.referenceFailed},
+                               {"memory_capped_plans", search.memoryCapped},
+                               {"tree_bytes_max", search.treeBytes},
                                {"episodes", episodes}};
             std::ofstream file(o.json);
             if (!file)
@@ -137,23 +148,23 @@ namespace
         app.add_option("--model", o->model, "Registered POMDP model")->capture_default_str();
         app.add_option("--solver", o->solver, "ropras3, refbasic, pomcp, rpomcp, bplan or rbss")->capture_default_str();
         // CLI11 reads "-1" into an unsigned option as 2^64 - 1: counts are range-checked as numbers first
-        app.add_option("--episodes", o->episodes, "Number of episodes")
+        app.add_option("--episodes", o->episodes, "Number of episodes (at most 10^6)")
             ->capture_default_str()
-            ->check(ropras::bin::POSITIVE_COUNT);
-        app.add_option("--steps", o->steps, "Maximum primitive steps per episode")
+            ->check(ropras::bin::EPISODES);
+        app.add_option("--steps", o->steps, "Maximum primitive steps per episode (at most 10^7)")
             ->capture_default_str()
-            ->check(ropras::bin::POSITIVE_COUNT);
-        app.add_option("--simulations", o->simulations, "Simulations per planning call (0 = no limit)")
+            ->check(ropras::bin::countCheck(1, 10000000, "COUNT"));
+        app.add_option("--simulations", o->simulations, "Simulations per planning call (0 = no limit; at most 10^9)")
             ->capture_default_str()
-            ->check(ropras::bin::NON_NEGATIVE_COUNT);
-        app.add_option("--seconds", o->seconds, "Seconds per planning call (0 = no limit)")
+            ->check(ropras::bin::SIMULATIONS_OR_ZERO);
+        app.add_option("--seconds", o->seconds, "Seconds per planning call (0 = no limit; at most 86400)")
             ->capture_default_str()
-            ->check(ropras::bin::NON_NEGATIVE_NUMBER);
+            ->check(ropras::bin::PLAN_SECONDS_OR_ZERO);
         app.add_option("--planning-particles", o->planningParticles,
-                       "Particles handed to the solver per plan (0 = the filter's)")
+                       "Particles handed to the solver per plan (0 = the filter's; memory is checked)")
             ->capture_default_str()
             ->check(ropras::bin::NON_NEGATIVE_COUNT);
-        app.add_option("--seed", o->seed, "Seed of the first episode")->capture_default_str();
+        app.add_option("--seed", o->seed, "Seed of the first episode")->capture_default_str()->check(ropras::bin::SEED);
         app.add_option("--param", o->params, "Solver / filter / model parameter name=value (repeatable)");
         app.add_option("--json", o->json, "Write the summary and per-episode results as JSON");
         app.add_flag("--list-models", o->listModels, "List the registered models and exit");

@@ -8,6 +8,7 @@
 
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
+#include "OutputChecks.h"
 #include "ropras/core/Error.h"
 #include "ropras/scenarios/SvgRenderer.h"
 
@@ -51,6 +52,7 @@ namespace
         {
             options.beliefSteps = stepList(o.steps);
         }
+        ropras::bin::refuseOverwritingInputs("--out", o.out, {o.recording});
         const auto recording = ropras::scenarios::loadRecording(o.recording);
         const std::string svg = ropras::scenarios::renderSvg(recording, options, o.recording);
         std::string out = o.out;
@@ -62,6 +64,7 @@ namespace
                                                                                            : o.recording) +
                   ".svg";
         }
+        ropras::bin::refuseOverwritingInputs("--out", out, {o.recording});
         std::ofstream file(out);
         file << svg;
         if (!file)
@@ -82,7 +85,7 @@ namespace
         app.add_option("--steps", o->steps, "Belief steps to draw, e.g. 0,50,100 (default: every recorded belief)");
         app.add_option("--width", o->width, "Width of the map in pixels")
             ->capture_default_str()
-            ->check(ropras::bin::numberCheck(50.0, false, false, "WIDTH >= 50"));
+            ->check(ropras::bin::numberCheck(50.0, false, false, "WIDTH >= 50", 100000.0));
         return [o] { return run(*o); };
     }
 

@@ -15,8 +15,11 @@
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "ProgressBar.h"
+#include "OutputChecks.h"
 #include "ropras/core/Error.h"
+#include "ropras/core/InputFile.h"
 #include "ropras/scenarios/ExperimentRunner.h"
+#include "ropras/scenarios/JsonLinesAppender.h"
 #include "ropras/scenarios/ResultTable.h"
 #include "ropras/scenarios/ScenarioRegistry.h"
 
@@ -54,14 +57,10 @@ namespace
         {
             return options;
         }
-        std::ifstream file(path);
-        if (!file)
-        {
-            throw ropras::Error("--config: cannot read \"" + path + "\"");
-        }
+        const std::string text = ropras::readInputFile(path, "--config");
         try
         {
-            options.overrides = nlohmann::json::parse(file);
+            options.overrides = nlohmann::json::parse(text);
         }
         catch (const nlohmann::json::exception &e)  // parse_error, and out_of_range for 1e400
         {
@@ -79,6 +78,7 @@ namespace
     int run(const RunOptions &o)
     {
         namespace sc = ropras::scenarios;
+        ropras::bin::refuseOverwritingInputs("--out", o.out, {o.config});
         ompl::msg::setLogLevel(ompl::msg::LOG_WARN);  // OMPL's per-plan info lines would drown the progress
         const auto &registry = sc::scenarioRegistry();
         if (o.listScenarios)
@@ -128,13 +128,15 @@ namespace
             return 0;
         }
 
-        std::unique_ptr<std::ofstream> out;
+        std::unique_ptr<sc::JsonLinesAppender> out;
         if (!o.out.empty())
         {
-            out = std::make_unique<std::ofstream>(o.out, std::ios::app);
-            if (!*out)
+            out = std::make_unique<sc::JsonLinesAppender>(o.out, "--out");
+            if (out->repairedLine() > 0)
             {
-                throw ropras::Error("--out: cannot open \"" + o.out + "\" for appending");
+                std::cerr << "ropras run: warning: " << o.out << ":" << out->repairedLine()
+                          << " was a truncated record (an interrupted run); it is ended with a newline so that "
+                             "the new records start on their own lines (`ropras table` skips it)\n";
             }
         }
 
@@ -142,9 +144,7 @@ namespace
         std::size_t successes = 0;
         if (!o.quiet)
         {
-            std::size_t owned = 0;
-            for (std::size_t e = 0; e < settings.episodes; ++e)
-                owned += settings.shard.owns(e) ? 1 : 0;
+            const std::size_t owned = settings.shard.ownedCount(settings.episodes);
             const auto &b = resolved.budget;
             std::cerr << "ropras run: " << scenario->name() << " / " << o.solver << ", " << owned << " of "
                       << settings.episodes << " episodes (shard " << settings.shard.str() << "), "
@@ -157,12 +157,7 @@ namespace
         {
             if (out)
             {
-                *out << record.dump() << '\n';
-                out->flush();
-                if (!*out)
-                {
-                    throw ropras::Error("--out: writing to \"" + o.out + "\" failed");
-                }
+                out->append(record.dump());
             }
         };
         callbacks.onProgress = [&](const sc::ExperimentProgress &p)
@@ -207,6 +202,16 @@ namespace
                       << " episodes owns no episode\n";
             return 0;
         }
+        std::size_t capped = 0;
+        for (const auto &record : records)
+            capped += record.value("memory_capped_plans", std::size_t(0));
+        if (capped > 0)
+        {
+            std::cerr << "ropras run: warning: " << capped
+                      << " planning calls stopped early because the search tree reached its memory cap (solver "
+                         "parameter max_tree_mb, default 1024 MiB per thread; see memory_capped_plans in the "
+                         "records)\n";
+        }
         sc::ResultTable table;
         for (std::size_t i = 0; i < records.size(); ++i)
         {
@@ -229,21 +234,23 @@ namespace
             ->check(ropras::bin::NON_NEGATIVE_NUMBER);
         app.add_option("--planner", o->planner, "OMPL planner of the reference policy (any registered name)")
             ->capture_default_str();
-        app.add_option("--episodes", o->episodes, "Episodes of the experiment (all shards together)")
+        app.add_option("--episodes", o->episodes, "Episodes of the experiment (all shards together, at most 10^6)")
             ->capture_default_str()
-            ->check(ropras::bin::POSITIVE_COUNT);
-        auto *planTime = app.add_option("--plan-time", o->planTime,
-                                        "Seconds per planning call (default: the scenario's, a tenth of the paper's)")
-                             ->check(ropras::bin::POSITIVE_NUMBER);
-        auto *sims = app.add_option("--sims", o->sims, "Simulations per planning call (exactly reproducible)")
-                         ->check(ropras::bin::POSITIVE_COUNT);
+            ->check(ropras::bin::EPISODES);
+        auto *planTime =
+            app.add_option("--plan-time", o->planTime,
+                           "Seconds per planning call (default: the scenario's, a tenth of the paper's; at most 86400)")
+                ->check(ropras::bin::PLAN_SECONDS);
+        auto *sims =
+            app.add_option("--sims", o->sims, "Simulations per planning call (exactly reproducible; at most 10^9)")
+                ->check(ropras::bin::SIMULATIONS);
         planTime->excludes(sims);
         app.add_option("--seed", o->seed, "Run seed; episode e runs with a seed mixed from (seed, e)")
             ->capture_default_str()
-            ->check(ropras::bin::NON_NEGATIVE_COUNT);
-        app.add_option("--threads", o->threads, "Worker threads (0 = hardware concurrency)")
+            ->check(ropras::bin::SEED);
+        app.add_option("--threads", o->threads, "Worker threads (0 = hardware concurrency; at most 1024)")
             ->capture_default_str()
-            ->check(ropras::bin::NON_NEGATIVE_COUNT);
+            ->check(ropras::bin::countCheck(0, 1024, "COUNT"));
         app.add_option("--shard", o->shard, "Run only episodes e with e % N == i (i/N, e.g. 3/10)")
             ->capture_default_str();
         app.add_option("--out", o->out, "Append one JSON line per episode to this file");

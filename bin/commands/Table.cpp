@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "CommandRegistry.h"
+#include "OutputChecks.h"
 #include "ropras/core/Error.h"
 #include "ropras/scenarios/ResultTable.h"
 
@@ -19,6 +20,7 @@ namespace
 
     int run(const TableOptions &o)
     {
+        ropras::bin::refuseOverwritingInputs("--out", o.out, o.files);
         ropras::scenarios::ResultTable table;
         for (const auto &file : o.files)
         {

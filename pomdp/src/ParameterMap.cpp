@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 #include "ropras/core/Error.h"
@@ -56,12 +57,18 @@ namespace ropras::pomdp
         return it == values_.end() ? fallback : it->second;
     }
 
-    std::size_t ParameterMap::getCount(const std::string &name, std::size_t fallback) const
+    std::size_t ParameterMap::getCount(const std::string &name, std::size_t fallback, double max) const
     {
         const double value = get(name, static_cast<double>(fallback));
-        if (value < 0.0 || value != std::floor(value) || value > 1e15)
+        if (value < 0.0 || value != std::floor(value))
         {
             throw Error("parameter \"" + name + "\" = " + std::to_string(value) + " must be a non-negative integer");
+        }
+        if (value > max)
+        {
+            char text[96];
+            std::snprintf(text, sizeof(text), "%.17g exceeds the maximum %.17g", value, max);
+            throw Error("parameter \"" + name + "\" = " + text);
         }
         return static_cast<std::size_t>(value);
     }

@@ -51,13 +51,9 @@ namespace ropras::scenarios
             : margin(margin), dispatcher(&configuration), world(&dispatcher, &broadphase, &configuration)
         {
         }
-        ~Impl()
-        {
-            for (auto &object : objects)
-            {
-                world.removeCollisionObject(object.get());
-            }
-        }
+        // No removeCollisionObject() per object: Bullet finds each one by a linear search, so tearing down n
+        // objects cost O(n^2) (100 000 obstacles: seconds). The world is declared after the objects and shapes, so
+        // it is destroyed first and releases their broadphase proxies itself; then the objects are freed.
 
         btCollisionObject *addObject(std::unique_ptr<btCollisionShape> shape, const Eigen::Vector3d &position)
         {
@@ -78,9 +74,9 @@ namespace ropras::scenarios
         btDefaultCollisionConfiguration configuration;
         btCollisionDispatcher dispatcher;
         btDbvtBroadphase broadphase;
-        btCollisionWorld world;
         std::vector<std::unique_ptr<btCollisionShape>> shapes;
         std::vector<std::unique_ptr<btCollisionObject>> objects;
+        btCollisionWorld world;  // after the objects: destroyed before them
         std::size_t obstacles{0};
         std::vector<btCollisionObject *> agents;
     };

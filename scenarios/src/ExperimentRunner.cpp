@@ -169,6 +169,8 @@ namespace ropras::scenarios
                                   ? static_cast<double>(s.referenceFailed) / static_cast<double>(s.referenceRequested)
                                   : 0.0;
         out["max_depth"] = s.maxDepth;
+        out["memory_capped_plans"] = s.memoryCapped;
+        out["tree_mb_max"] = static_cast<double>(s.treeBytes) / 1048576.0;
         out["wall_time_s"] = wallSeconds;
         return out;
     }
@@ -182,9 +184,10 @@ namespace ropras::scenarios
                                               const ExperimentCallbacks &callbacks)
     {
         const auto start = std::chrono::steady_clock::now();
-        if (settings.episodes == 0)
+        if (settings.episodes == 0 || settings.episodes > MAX_EPISODES)
         {
-            throw Error("the number of episodes must be >= 1");
+            throw Error("the number of episodes " + std::to_string(settings.episodes) + " must be in [1, " +
+                        std::to_string(MAX_EPISODES) + "]");
         }
         settings.shard.validate();
         const RunSettings run = resolvedRunSettings(scenario, settings.run);
@@ -195,16 +198,10 @@ namespace ropras::scenarios
         }
         const nlohmann::json configuration = experimentConfiguration(scenario, settings, run);
 
-        std::vector<std::size_t> episodes;
-        for (std::size_t e = 0; e < settings.episodes; ++e)
-        {
-            if (settings.shard.owns(e))
-            {
-                episodes.push_back(e);
-            }
-        }
-        std::vector<nlohmann::json> records(episodes.size());
-        std::vector<char> finished(episodes.size(), 0);
+        // the shard's episodes are index, index + N, ...: computed, never searched for among all indices
+        const std::size_t owned = settings.shard.ownedCount(settings.episodes);
+        std::vector<nlohmann::json> records(owned);
+        std::vector<char> finished(owned, 0);
         std::size_t nextToReport = 0, done = 0;
         std::mutex mutex;
         std::atomic<std::size_t> next{0};
@@ -216,11 +213,11 @@ namespace ropras::scenarios
             for (;;)
             {
                 const std::size_t slot = next.fetch_add(1);
-                if (slot >= episodes.size() || stop.load())
+                if (slot >= owned || stop.load())
                 {
                     return;
                 }
-                const std::size_t episode = episodes[slot];
+                const std::size_t episode = settings.shard.ownedEpisode(slot);
                 const std::uint64_t seed = episodeSeed(settings.seed, episode);
                 try
                 {
@@ -253,10 +250,9 @@ namespace ropras::scenarios
                     ++done;
                     if (callbacks.onProgress)
                     {
-                        callbacks.onProgress(
-                            ExperimentProgress{done, episodes.size(), secondsSince(start), &records[slot]});
+                        callbacks.onProgress(ExperimentProgress{done, owned, secondsSince(start), &records[slot]});
                     }
-                    while (nextToReport < episodes.size() && finished[nextToReport])
+                    while (nextToReport < owned && finished[nextToReport])
                     {
                         if (callbacks.onRecord)
                         {
@@ -297,7 +293,7 @@ namespace ropras::scenarios
         {
             threads = std::max<std::size_t>(1, std::thread::hardware_concurrency());
         }
-        threads = std::min(threads, std::max<std::size_t>(1, episodes.size()));
+        threads = std::min(threads, std::max<std::size_t>(1, owned));
         if (threads <= 1)
         {
             work();

@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "ropras/core/Error.h"
+#include "ropras/core/InputFile.h"
 
 namespace ropras::scenarios
 {
@@ -374,7 +375,16 @@ namespace ropras::scenarios
             }
             catch (const nlohmann::json::exception &e)  // parse_error, and out_of_range for 1e400
             {
-                throw Error(source + ": malformed JSON: " + e.what());
+                // an object cut off before its end (what a writer interrupted between its system calls leaves): the
+                // parser failed only when the line ran out, past its last byte
+                const bool truncated = line.find_first_not_of(" \t") == line.find('{') && e.byte > line.size();
+                if (!truncated)
+                {
+                    throw Error(source + ": malformed JSON: " + e.what());
+                }
+                warnings_.push_back(source + ": truncated record (" + std::to_string(line.size()) +
+                                    " bytes, cut off before its end: an interrupted run?), skipped");
+                continue;
             }
             add(record, source);
             ++count;
@@ -384,6 +394,7 @@ namespace ropras::scenarios
 
     std::size_t ResultTable::addFile(const std::string &path)
     {
+        checkInputFile(path, "results file");
         std::ifstream file(path);
         if (!file)
         {

@@ -4,11 +4,11 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <sstream>
 
 #include "ropras/core/Error.h"
+#include "ropras/core/InputFile.h"
 
 namespace ropras::scenarios
 {
@@ -267,14 +267,10 @@ namespace ropras::scenarios
 
     nlohmann::json loadRecording(const std::string &path)
     {
-        std::ifstream file(path);
-        if (!file)
-        {
-            throw Error("cannot open the recording \"" + path + "\"");
-        }
+        const std::string text = readInputFile(path, "recording");
         try
         {
-            return nlohmann::json::parse(file);
+            return nlohmann::json::parse(text);
         }
         catch (const nlohmann::json::exception &e)  // parse_error, and out_of_range for 1e400
         {

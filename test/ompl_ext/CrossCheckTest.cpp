@@ -430,3 +430,53 @@ TEST(CrossCheck, VerdictsAgreeUpToTheContactTolerance)
                   << " configurations within 3 mm of contact flip (all within 1e-4 m)\n";
     }
 }
+
+TEST(CrossCheck, ChunkedSamplesMatchAnIndependentCountAndUseBoundedMemory)
+{
+    // crossCheckSpheres samples and checks a scene's configurations a chunk (4096) at a time instead of one
+    // count x dof buffer (which overflowed and crashed for --samples 2^64 - 1). Across chunk boundaries the draws,
+    // verdicts and centre checks must be those of one sequence: recount them independently with the same generator
+    const fs::path root = ROPRAS_SOURCE_DIR;
+    const fs::path arm = root / "robots" / "ropras_arm";
+    const auto robot = RobotModel::fromUrdfFile((arm / "ropras_arm.urdf").string(), (arm / "ropras_arm.srdf").string());
+    const std::vector<CrossCheckScene> scenes = {
+        {"tabletop", loadPlanningScene((root / "scenes" / "tabletop.yaml").string())}, {"(no obstacles)", {}}};
+    CrossCheckOptions options;
+    options.samples = 2 * (2 * 4096 + 37) + 1;  // scene 0: two chunks and a tail of 38, scene 1: 37
+    options.seed = 9;
+    options.centerStride = 3;  // not a divisor of the chunk: batch starts must continue across chunks
+    const CrossCheckReport report = crossCheckSpheres(robot, scenes, options);
+
+    std::mt19937_64 rng(options.seed);
+    const FclSphereChecker fcl(robot);
+    std::size_t valid = 0;
+    std::vector<std::size_t> expectedCenterChecks(options.backends.size(), 0);
+    std::vector<double> q(robot->dof());
+    for (std::size_t s = 0; s < scenes.size(); ++s)
+    {
+        const std::size_t count = options.samples / 2 + (s < options.samples % 2 ? 1 : 0);
+        for (std::size_t k = 0; k < count; ++k)
+        {
+            sampleConfiguration(*robot, rng, q.data());
+            valid += fcl.isValid(scenes[s].env, q.data());
+        }
+        for (std::size_t b = 0; b < options.backends.size(); ++b)
+        {
+            const std::size_t width = std::size_t(CollisionChecker(robot, options.backends[b]).width());
+            std::size_t batches = 0;
+            for (std::size_t first = 0; first + width <= count; first += width * options.centerStride)
+                ++batches;
+            expectedCenterChecks[b] += (count + options.centerStride - 1) / options.centerStride + batches * width;
+        }
+    }
+    EXPECT_EQ(report.configurations, options.samples);
+    EXPECT_EQ(report.referenceValid, valid);
+    ASSERT_EQ(report.backends.size(), options.backends.size());
+    for (std::size_t b = 0; b < options.backends.size(); ++b)
+    {
+        EXPECT_EQ(report.backends[b].centerChecks, expectedCenterChecks[b]) << simdBackendName(options.backends[b]);
+        EXPECT_EQ(report.backends[b].agree + report.backends[b].nearContact + report.backends[b].disagreements,
+                  options.samples);
+    }
+    EXPECT_TRUE(report.passed(options.centerTolerance));
+}

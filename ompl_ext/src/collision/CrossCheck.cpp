@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <sstream>
 
@@ -67,6 +68,111 @@ namespace ropras::ompl_ext
         return configurations > 0;
     }
 
+    namespace
+    {
+        /// configurations sampled and checked at a time (a multiple of every SIMD width)
+        constexpr std::size_t CHUNK = 4096;
+
+        /// what crossCheckSpheres() compares one configuration with
+        struct CrossCheckContext
+        {
+            const RobotModel &robot;
+            const std::vector<std::unique_ptr<CollisionChecker>> &checkers;
+            const FclSphereChecker &reference;
+            const CrossCheckOptions &options;
+            CrossCheckReport &report;
+            std::vector<float> &centers;
+            std::size_t stride;
+        };
+
+        std::string disagreement(const CrossCheckContext &c, const CrossCheckScene &scene, SimdBackend backend,
+                                 bool verdict, bool expected, double distance, const double *q)
+        {
+            std::ostringstream s;
+            s << "scene '" << scene.name << "', " << simdBackendName(backend) << " says "
+              << (verdict ? "valid" : "invalid") << ", FCL says " << (expected ? "valid" : "invalid")
+              << " (signed distance " << distance << " m), q = " << formatConfiguration(c.robot, q);
+            const std::string what = c.reference.describeCollision(scene.env, q);
+            if (!what.empty())
+                s << "; FCL: " << what;
+            return s.str();
+        }
+
+        /// one configuration: each backend's single and batch verdicts against FCL's, and (when \a centres) its
+        /// sphere centres against the double-precision reference
+        template <class BatchVerdict>
+        void compareConfiguration(const CrossCheckContext &c, const CrossCheckScene &scene, const double *q,
+                                  bool compareCenters, BatchVerdict &&batchVerdict)
+        {
+            const bool expected = c.reference.isValid(scene.env, q);
+            c.report.referenceValid += expected;
+            ++c.report.configurations;
+            double distance = std::numeric_limits<double>::quiet_NaN();
+            std::vector<Eigen::Vector3d> referenceCenters;
+            if (compareCenters)
+                referenceCenters = c.robot.sphereCentersReference(q);
+            for (std::size_t b = 0; b < c.checkers.size(); ++b)
+            {
+                BackendAgreement &agreement = c.report.backends[b];
+                const bool verdict = c.checkers[b]->isValid(scene.env, q);
+                if (verdict != batchVerdict(b))
+                    ++agreement.batchMismatches;
+                if (verdict == expected)
+                    ++agreement.agree;
+                else
+                {
+                    if (std::isnan(distance))
+                        distance = c.reference.distance(scene.env, q);
+                    if (std::abs(distance) <= c.options.contactTolerance)
+                        ++agreement.nearContact;
+                    else
+                    {
+                        ++agreement.disagreements;
+                        if (c.report.examples.size() < c.options.maxExamples)
+                            c.report.examples.push_back(
+                                disagreement(c, scene, agreement.backend, verdict, expected, distance, q));
+                    }
+                }
+                if (compareCenters)
+                {
+                    c.checkers[b]->sphereCenters(q, c.centers.data());
+                    agreement.maxCenterError =
+                        std::max(agreement.maxCenterError, centerError(c.robot, referenceCenters, c.centers.data(), 1));
+                    ++agreement.centerChecks;
+                }
+            }
+        }
+
+        /// the batched kinematics on whole SIMD batches of the \a chunk configurations \a qs, which are the
+        /// scene's configurations from index \a chunkStart on (batches start at multiples of width x stride)
+        void batchedCenters(const CrossCheckContext &c, const double *qs, std::size_t chunkStart, std::size_t chunk)
+        {
+            const std::size_t dof = c.robot.dof();
+            for (std::size_t b = 0; b < c.checkers.size(); ++b)
+            {
+                const std::size_t width = std::size_t(c.checkers[b]->width());
+                const std::size_t step = c.stride > SIZE_MAX / width ? SIZE_MAX : width * c.stride;
+                std::vector<float> out(c.robot.spheres().size() * 4 * width);
+                const std::size_t rem = chunkStart % step;
+                for (std::size_t start = rem == 0 ? 0 : step - rem; start < chunk && width <= chunk - start;
+                     start += step)
+                {
+                    c.checkers[b]->sphereCentersBatch(qs + start * dof, out.data());
+                    for (std::size_t lane = 0; lane < width; ++lane)
+                    {
+                        const auto referenceCenters = c.robot.sphereCentersReference(qs + (start + lane) * dof);
+                        c.report.backends[b].maxCenterError =
+                            std::max(c.report.backends[b].maxCenterError,
+                                     centerError(c.robot, referenceCenters, out.data() + lane, width));
+                        ++c.report.backends[b].centerChecks;
+                    }
+                    if (chunk - start <= step)
+                        break;
+                }
+            }
+        }
+    }  // namespace
+
     CrossCheckReport crossCheckSpheres(const std::shared_ptr<const RobotModel> &robot,
                                        const std::vector<CrossCheckScene> &scenes, const CrossCheckOptions &options)
     {
@@ -89,95 +195,32 @@ namespace ropras::ompl_ext
         }
         const FclSphereChecker reference(robot);
         const std::size_t dof = robot->dof();
-        const std::size_t sphereCount = robot->spheres().size();
-        const std::size_t stride = std::max<std::size_t>(options.centerStride, 1);
+        std::vector<float> centers(robot->spheres().size() * 4);
+        const CrossCheckContext context{
+            *robot, checkers, reference, options, report, centers, std::max<std::size_t>(options.centerStride, 1)};
         std::mt19937_64 rng(options.seed);
 
-        std::vector<double> qs;
-        std::vector<float> centers(sphereCount * 4);
-        std::unique_ptr<bool[]> batch;
+        // a scene's configurations are sampled and checked CHUNK at a time: memory does not grow with the sample
+        // count (and no count x dof product can overflow); the draws and verdicts are those of one big batch
+        std::vector<double> qs(CHUNK * dof);
+        std::unique_ptr<bool[]> batch(new bool[CHUNK * checkers.size()]);
         for (std::size_t sceneIndex = 0; sceneIndex < scenes.size(); ++sceneIndex)
         {
             const CrossCheckScene &scene = scenes[sceneIndex];
             const std::size_t count = shareOf(options.samples, scenes.size(), sceneIndex);
-            if (count == 0)
-                continue;
-            qs.resize(count * dof);
-            for (std::size_t k = 0; k < count; ++k)
-                sampleConfiguration(*robot, rng, qs.data() + k * dof);
-            batch.reset(new bool[count * checkers.size()]);
-            for (std::size_t b = 0; b < checkers.size(); ++b)
-                checkers[b]->isValidBatch(scene.env, qs.data(), count, batch.get() + b * count);
-
-            for (std::size_t k = 0; k < count; ++k)
+            for (std::size_t chunkStart = 0; chunkStart < count; chunkStart += CHUNK)
             {
-                const double *q = qs.data() + k * dof;
-                const bool expected = reference.isValid(scene.env, q);
-                report.referenceValid += expected;
-                ++report.configurations;
-                double distance = std::numeric_limits<double>::quiet_NaN();
-                const bool compareCenters = k % stride == 0;
-                std::vector<Eigen::Vector3d> referenceCenters;
-                if (compareCenters)
-                    referenceCenters = robot->sphereCentersReference(q);
+                const std::size_t chunk = std::min(CHUNK, count - chunkStart);
+                for (std::size_t k = 0; k < chunk; ++k)
+                    sampleConfiguration(*robot, rng, qs.data() + k * dof);
                 for (std::size_t b = 0; b < checkers.size(); ++b)
-                {
-                    BackendAgreement &agreement = report.backends[b];
-                    const bool verdict = checkers[b]->isValid(scene.env, q);
-                    if (verdict != batch[b * count + k])
-                        ++agreement.batchMismatches;
-                    if (verdict == expected)
-                        ++agreement.agree;
-                    else
-                    {
-                        if (std::isnan(distance))
-                            distance = reference.distance(scene.env, q);
-                        if (std::abs(distance) <= options.contactTolerance)
-                            ++agreement.nearContact;
-                        else
-                        {
-                            ++agreement.disagreements;
-                            if (report.examples.size() < options.maxExamples)
-                            {
-                                std::ostringstream s;
-                                s << "scene '" << scene.name << "', " << simdBackendName(agreement.backend) << " says "
-                                  << (verdict ? "valid" : "invalid") << ", FCL says "
-                                  << (expected ? "valid" : "invalid") << " (signed distance " << distance
-                                  << " m), q = " << formatConfiguration(*robot, q);
-                                const std::string what = reference.describeCollision(scene.env, q);
-                                if (!what.empty())
-                                    s << "; FCL: " << what;
-                                report.examples.push_back(s.str());
-                            }
-                        }
-                    }
-                    if (compareCenters)
-                    {
-                        checkers[b]->sphereCenters(q, centers.data());
-                        agreement.maxCenterError = std::max(agreement.maxCenterError,
-                                                            centerError(*robot, referenceCenters, centers.data(), 1));
-                        ++agreement.centerChecks;
-                    }
-                }
-            }
-
-            // the batched kinematics: whole SIMD batches of this scene's configurations
-            for (std::size_t b = 0; b < checkers.size(); ++b)
-            {
-                const std::size_t width = std::size_t(checkers[b]->width());
-                std::vector<float> out(sphereCount * 4 * width);
-                for (std::size_t first = 0; first + width <= count; first += width * stride)
-                {
-                    checkers[b]->sphereCentersBatch(qs.data() + first * dof, out.data());
-                    for (std::size_t lane = 0; lane < width; ++lane)
-                    {
-                        const auto referenceCenters = robot->sphereCentersReference(qs.data() + (first + lane) * dof);
-                        report.backends[b].maxCenterError =
-                            std::max(report.backends[b].maxCenterError,
-                                     centerError(*robot, referenceCenters, out.data() + lane, width));
-                        ++report.backends[b].centerChecks;
-                    }
-                }
+                    checkers[b]->isValidBatch(scene.env, qs.data(), chunk, batch.get() + b * CHUNK);
+                for (std::size_t k = 0; k < chunk; ++k)
+                    compareConfiguration(context, scene, qs.data() + k * dof, (chunkStart + k) % context.stride == 0,
+                                         [&](std::size_t b) { return batch[b * CHUNK + k]; });
+                batchedCenters(context, qs.data(), chunkStart, chunk);
+                if (count - chunkStart <= CHUNK)
+                    break;  // chunkStart + CHUNK could overflow for a count near 2^64
             }
         }
         return report;

@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "ropras/core/Error.h"
+#include "ropras/core/InputFile.h"
 
 namespace fs = std::filesystem;
 
@@ -74,10 +75,7 @@ namespace ropras::ompl_ext
             throw Error("mesh '" + path + "': scale must be finite and non-zero, got (" + std::to_string(scale.x()) +
                         ", " + std::to_string(scale.y()) + ", " + std::to_string(scale.z()) + ")");
         }
-        if (!isRegularFile(path))
-        {
-            throw Error("mesh '" + path + "': file not found");
-        }
+        checkInputFile(path, "mesh");  // a regular file within the input size limit
         Assimp::Importer importer;
         // URDF meshes are Z-up as authored: do not let the COLLADA importer rotate Z-up files to Y-up.
         importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);

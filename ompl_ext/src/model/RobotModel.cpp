@@ -12,17 +12,19 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <locale>
 #include <random>
 #include <set>
 #include <sstream>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "model/EnclosingSphere.h"
 #include "model/SrdfReader.h"
 #include "model/UrdfSanity.h"
 #include "ropras/core/Error.h"
+#include "ropras/core/InputFile.h"
 #include "ropras/ompl_ext/model/MeshLoader.h"
 
 namespace ropras::ompl_ext
@@ -30,26 +32,6 @@ namespace ropras::ompl_ext
     namespace
     {
         constexpr double PI = 3.14159265358979323846;
-
-        std::string readTextFile(const std::string &path, const char *what)
-        {
-            std::error_code ec;
-            if (!std::filesystem::is_regular_file(path, ec))
-            {
-                // /dev/null, a folder or a pipe exists: "not found" would send the user looking for a typo
-                throw Error(std::string(what) + " '" + path + "': " +
-                            (std::filesystem::exists(path, ec) ? "not a regular file (a folder, device or pipe)"
-                                                               : "file not found"));
-            }
-            std::ifstream in(path, std::ios::binary);
-            if (!in)
-            {
-                throw Error(std::string(what) + " '" + path + "': cannot open the file");
-            }
-            std::ostringstream ss;
-            ss << in.rdbuf();
-            return ss.str();
-        }
 
         Eigen::Isometry3d toIsometry(const urdf::Pose &pose)
         {
@@ -676,7 +658,11 @@ namespace ropras::ompl_ext
                     model_->spheres_.push_back(cs);
                     inFrame.push_back(Sphere{cs.centerInFrame, cs.radius});
                 }
-                const Sphere bound = enclosingSphere(inFrame);
+                // the refinement costs 2 x iterations x spheres: a link of 100 000 spheres gets 200 iterations
+                // instead of 2000 (the bound still encloses every sphere exactly; it is only a little less tight)
+                const int iterations =
+                    inFrame.size() > 10000 ? std::max(200, static_cast<int>(2e7 / double(inFrame.size()))) : 2000;
+                const Sphere bound = enclosingSphere(inFrame, iterations);
                 cl.boundCenterInFrame = bound.center;
                 cl.boundRadius = bound.radius;
                 model_->collisionLinks_.push_back(cl);
@@ -690,13 +676,21 @@ namespace ropras::ompl_ext
         void buildSelfPairs(const std::string &srdfXml)
         {
             const auto &links = model_->links_;
-            const auto &joints = model_->urdfJoints_;
             std::vector<int> collisionOf(links.size(), -1);
             for (std::size_t i = 0; i < model_->collisionLinks_.size(); ++i)
             {
                 collisionOf[model_->collisionLinks_[i].link] = static_cast<int>(i);
             }
-            std::set<std::pair<int, int>> disabled;
+            // pairs of link indices that are never checked: SRDF disable_collisions, Options::disabledPairs, and
+            // adjacent links (hashed: the loop over all collision-link pairs below does O(1) work per pair)
+            std::unordered_set<std::uint64_t> skipped;
+            const auto key = [](int a, int b)
+            { return (std::uint64_t(std::uint32_t(std::min(a, b))) << 32) | std::uint32_t(std::max(a, b)); };
+            std::unordered_map<std::string, int> linkIndex;
+            for (std::size_t i = 0; i < links.size(); ++i)
+            {
+                linkIndex.emplace(links[i].name, static_cast<int>(i));
+            }
             if (!srdfXml.empty())
             {
                 std::vector<std::string> names;
@@ -706,97 +700,92 @@ namespace ropras::ompl_ext
                 }
                 for (const auto &[a, b] : readSrdfDisabledPairs(srdfXml, srdfName_, names))
                 {
-                    int ia = -1, ib = -1;
-                    for (std::size_t i = 0; i < links.size(); ++i)
+                    const auto ia = linkIndex.find(a), ib = linkIndex.find(b);
+                    if (ia != linkIndex.end() && ib != linkIndex.end())  // the reader rejects unknown names
                     {
-                        if (links[i].name == a)
-                        {
-                            ia = static_cast<int>(i);
-                        }
-                        if (links[i].name == b)
-                        {
-                            ib = static_cast<int>(i);
-                        }
+                        skipped.insert(key(ia->second, ib->second));
                     }
-                    disabled.insert({std::min(ia, ib), std::max(ia, ib)});
                 }
             }
             for (const auto &[a, b] : options_.disabledPairs)
             {
-                int ia = -1, ib = -1;
-                for (std::size_t i = 0; i < links.size(); ++i)
+                const auto ia = linkIndex.find(a), ib = linkIndex.find(b);
+                if (ia == linkIndex.end() || ib == linkIndex.end())
                 {
-                    ia = links[i].name == a ? static_cast<int>(i) : ia;
-                    ib = links[i].name == b ? static_cast<int>(i) : ib;
+                    fail("Options::disabledPairs names unknown link '" + (ia == linkIndex.end() ? a : b) + "'");
                 }
-                if (ia < 0 || ib < 0)
-                {
-                    fail("Options::disabledPairs names unknown link '" + (ia < 0 ? a : b) + "'");
-                }
-                disabled.insert({std::min(ia, ib), std::max(ia, ib)});
+                skipped.insert(key(ia->second, ib->second));
             }
-            // depth of each link for path finding
-            std::vector<int> depth(links.size(), 0);
-            for (std::size_t i = 1; i < links.size(); ++i)
+            std::vector<std::vector<int>> childJoints(links.size());
+            for (std::size_t j = 0; j < model_->urdfJoints_.size(); ++j)
             {
-                depth[i] = depth[joints[links[i].parentJoint].parentLink] + 1;
+                childJoints[static_cast<std::size_t>(model_->urdfJoints_[j].parentLink)].push_back(static_cast<int>(j));
             }
-            auto adjacent = [&](int a, int b)
+            for (std::size_t i = 0; i < model_->collisionLinks_.size(); ++i)
             {
-                int movable = 0;
-                bool interiorClear = true;
-                auto stepUp = [&](int &l, bool isEndpoint)
+                const int a = model_->collisionLinks_[i].link;
+                for (const int b : adjacentLinks(a, collisionOf, childJoints))
                 {
-                    if (!isEndpoint && collisionOf[l] >= 0)
-                    {
-                        interiorClear = false;
-                    }
-                    const UrdfJoint &j = joints[links[l].parentJoint];
-                    movable += j.type != JointType::Fixed ? 1 : 0;
-                    l = j.parentLink;
-                };
-                int x = a, y = b;
-                bool xEnd = true, yEnd = true;
-                while (depth[x] > depth[y])
-                {
-                    stepUp(x, xEnd);
-                    xEnd = false;
+                    skipped.insert(key(a, b));
                 }
-                while (depth[y] > depth[x])
-                {
-                    stepUp(y, yEnd);
-                    yEnd = false;
-                }
-                while (x != y)
-                {
-                    stepUp(x, xEnd);
-                    stepUp(y, yEnd);
-                    xEnd = yEnd = false;
-                }
-                // x is the common ancestor: interior unless it is one of the two links
-                if (x != a && x != b && collisionOf[x] >= 0)
-                {
-                    interiorClear = false;
-                }
-                return interiorClear && movable <= 1;
-            };
+            }
             const auto &cls = model_->collisionLinks_;
             for (std::size_t i = 0; i < cls.size(); ++i)
             {
                 for (std::size_t k = i + 1; k < cls.size(); ++k)
                 {
-                    if (cls[i].frame == cls[k].frame)
+                    if (cls[i].frame != cls[k].frame && skipped.count(key(cls[i].link, cls[k].link)) == 0)
                     {
-                        continue;
+                        model_->selfPairs_.emplace_back(static_cast<int>(i), static_cast<int>(k));
                     }
-                    const int la = cls[i].link, lb = cls[k].link;
-                    if (disabled.count({std::min(la, lb), std::max(la, lb)}) != 0 || adjacent(la, lb))
-                    {
-                        continue;
-                    }
-                    model_->selfPairs_.emplace_back(static_cast<int>(i), static_cast<int>(k));
                 }
             }
+        }
+
+        /** \brief The links with collision geometry adjacent to link \a from: the tree path between them has at
+            most one non-fixed joint and every link strictly inside it has no collision geometry. Found by a walk
+            from \a from that stops at geometry and at a second non-fixed joint, so its cost is the size of that
+            neighbourhood (not the depth of the tree for every pair of links). */
+        std::vector<int> adjacentLinks(int from, const std::vector<int> &collisionOf,
+                                       const std::vector<std::vector<int>> &childJoints) const
+        {
+            const auto &links = model_->links_;
+            const auto &joints = model_->urdfJoints_;
+            std::vector<int> out;
+            struct Step
+            {
+                int link, previous, movable;
+            };
+            std::vector<Step> stack{{from, -1, 0}};
+            while (!stack.empty())
+            {
+                const Step step = stack.back();
+                stack.pop_back();
+                if (step.link != from && collisionOf[static_cast<std::size_t>(step.link)] >= 0)
+                {
+                    out.push_back(step.link);  // an end point: the path does not continue through geometry
+                    continue;
+                }
+                const auto visit = [&](int next, const UrdfJoint &joint)
+                {
+                    const int movable = step.movable + (joint.type != JointType::Fixed ? 1 : 0);
+                    if (next != step.previous && movable <= 1)
+                    {
+                        stack.push_back({next, step.link, movable});
+                    }
+                };
+                const Link &link = links[static_cast<std::size_t>(step.link)];
+                if (link.parentJoint >= 0)
+                {
+                    const UrdfJoint &up = joints[static_cast<std::size_t>(link.parentJoint)];
+                    visit(up.parentLink, up);
+                }
+                for (const int j : childJoints[static_cast<std::size_t>(step.link)])
+                {
+                    visit(joints[static_cast<std::size_t>(j)].childLink, joints[static_cast<std::size_t>(j)]);
+                }
+            }
+            return out;
         }
 
         /// true when some sphere of collision link \a a touches (distance <= sum of radii) one of link \a b
@@ -860,9 +849,16 @@ namespace ropras::ompl_ext
                 {
                     model_->alwaysPairs_.push_back(pairNames(p));
                 }
+                std::unordered_set<std::uint64_t> alwaysKeys;  // hashed: O(1) per pair, not O(|always|)
+                for (const std::pair<int, int> &p : always)
+                {
+                    alwaysKeys.insert((std::uint64_t(std::uint32_t(p.first)) << 32) | std::uint32_t(p.second));
+                }
                 pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
-                                           [&](const std::pair<int, int> &p)
-                                           { return std::find(always.begin(), always.end(), p) != always.end(); }),
+                                           [&](const std::pair<int, int> &p) {
+                                               return alwaysKeys.count((std::uint64_t(std::uint32_t(p.first)) << 32) |
+                                                                       std::uint32_t(p.second)) != 0;
+                                           }),
                             pairs.end());
             }
             const std::vector<double> q = model_->defaultConfiguration();
@@ -886,8 +882,8 @@ namespace ropras::ompl_ext
     std::shared_ptr<const RobotModel> RobotModel::fromUrdfFile(const std::string &urdfPath, const std::string &srdfPath,
                                                                const Options &options)
     {
-        const std::string urdfXml = readTextFile(urdfPath, "URDF");
-        const std::string srdfXml = srdfPath.empty() ? std::string() : readTextFile(srdfPath, "SRDF");
+        const std::string urdfXml = readInputFile(urdfPath, "URDF");
+        const std::string srdfXml = srdfPath.empty() ? std::string() : readInputFile(srdfPath, "SRDF");
         if (!srdfPath.empty() && srdfXml.find_first_not_of(" \t\r\n") == std::string::npos)
         {
             throw Error("SRDF '" + srdfPath + "': the file is empty");

@@ -64,6 +64,28 @@ namespace ropras::ompl_ext
                     result.pairs.emplace_back(la.firstSphere + a, lb.firstSphere + b);
         };
 
+        // A pair with more than maxVariables moving frames (or a prismatic one) between its links is not analysed:
+        // find that out on a walk that stops there (frames are in topological order, parent < index), so that a
+        // long chain does not cost its depth for each of its O(n^2) link pairs
+        {
+            int a = la.frame, b = lb.frame, moving = 0;
+            while (a != b && moving <= options.maxVariables)
+            {
+                int &up = a > b ? a : b;
+                const KinematicFrame &f = frames[static_cast<std::size_t>(up)];
+                if (f.motion == JointMotion::TranslateZ)
+                    moving = options.maxVariables + 1;
+                else if (f.motion == JointMotion::RotateZ)
+                    ++moving;
+                up = f.parent;
+            }
+            if (moving > options.maxVariables)
+            {
+                keepAll();
+                return result;
+            }
+        }
+
         // the two chains below the deepest common ancestor
         const std::vector<int> upA = ancestry(frames, la.frame), upB = ancestry(frames, lb.frame);
         Chain chain[2];

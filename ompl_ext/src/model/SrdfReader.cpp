@@ -2,7 +2,8 @@
 
 #include <tinyxml2.h>
 
-#include <algorithm>
+#include <string>
+#include <unordered_set>
 
 #include "ropras/core/Error.h"
 
@@ -22,8 +23,8 @@ namespace ropras::ompl_ext
         {
             throw Error("SRDF '" + sourceName + "': the root element must be <robot>");
         }
-        auto known = [&](const char *name)
-        { return std::find(knownLinks.begin(), knownLinks.end(), name) != knownLinks.end(); };
+        const std::unordered_set<std::string> names(knownLinks.begin(), knownLinks.end());  // O(1) per lookup
+        auto known = [&](const char *name) { return names.count(name) != 0; };
         std::vector<std::pair<std::string, std::string>> pairs;
         for (const tinyxml2::XMLElement *e = robot->FirstChildElement("disable_collisions"); e != nullptr;
              e = e->NextSiblingElement("disable_collisions"))

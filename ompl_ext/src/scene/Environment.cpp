@@ -90,6 +90,7 @@ namespace ropras::ompl_ext
                     break;
             }
         }
+        index_.emplace(object.name, static_cast<int>(objects_.size()));
         objects_.push_back({std::move(def), pose});
         writeQueryForm(objects_.back());
         return id;
@@ -146,18 +147,20 @@ namespace ropras::ompl_ext
 
     int Environment::objectId(const std::string &name) const
     {
-        for (std::size_t i = 0; i < objects_.size(); ++i)
-            if (objects_[i].def->name == name)
-                return static_cast<int>(i);
-        std::string known;
-        for (const Object &object : objects_)
-            known += (known.empty() ? "" : ", ") + object.def->name;
+        const auto it = index_.find(name);
+        if (it != index_.end())
+            return it->second;
+        std::string known;  // the first 20 names (a scene may have 100 000 objects)
+        for (std::size_t i = 0; i < objects_.size() && i < 20; ++i)
+            known += (known.empty() ? "" : ", ") + objects_[i].def->name;
+        if (objects_.size() > 20)
+            known += ", ... (" + std::to_string(objects_.size()) + " objects)";
         throw Error("Environment: unknown object '" + name + "' (objects: " + (known.empty() ? "none" : known) + ")");
     }
 
     bool Environment::hasObject(const std::string &name) const
     {
-        return std::any_of(objects_.begin(), objects_.end(), [&](const Object &o) { return o.def->name == name; });
+        return index_.count(name) != 0;
     }
 
     const std::string &Environment::objectName(int id) const
@@ -228,6 +231,7 @@ namespace ropras::ompl_ext
     {
         attached_.clear();
         objects_.clear();
+        index_.clear();
         spheres_.clear();
         boxes_.clear();
         cylinders_.clear();

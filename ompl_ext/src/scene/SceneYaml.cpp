@@ -5,13 +5,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
-#include <map>
 #include <set>
 #include <sstream>
 #include <vector>
 
 #include "ropras/core/Error.h"
+#include "ropras/core/InputFile.h"
 
 namespace ropras::ompl_ext
 {
@@ -473,18 +472,6 @@ namespace ropras::ompl_ext
             }
             return request;
         }
-
-        std::string readFile(const std::string &path)
-        {
-            std::ifstream in(path, std::ios::binary);
-            if (!in)
-                throw Error(path + ": cannot open file");
-            std::ostringstream text;
-            text << in.rdbuf();
-            if (in.bad())
-                throw Error(path + ": cannot read file");
-            return text.str();
-        }
     }  // namespace
 
     Environment planningSceneFromString(const std::string &yaml, const std::string &sourceName,
@@ -501,7 +488,7 @@ namespace ropras::ompl_ext
 
     Environment loadPlanningScene(const std::string &path, std::shared_ptr<const RobotModel> robot)
     {
-        return planningSceneFromString(readFile(path), path, std::move(robot));
+        return planningSceneFromString(readInputFile(path, "scene"), path, std::move(robot));
     }
 
     Environment loadPlanningScene(const std::string &path)
@@ -517,6 +504,6 @@ namespace ropras::ompl_ext
 
     MotionPlanRequest loadMotionPlanRequest(const std::string &path)
     {
-        return motionPlanRequestFromString(readFile(path), path);
+        return motionPlanRequestFromString(readInputFile(path, "request"), path);
     }
 }  // namespace ropras::ompl_ext

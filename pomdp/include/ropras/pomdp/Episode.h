@@ -2,11 +2,15 @@
 #define ROPRAS_POMDP_EPISODE_H
 
 #include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "ropras/core/Error.h"
+#include "ropras/core/MemoryLimit.h"
 #include "ropras/pomdp/Budget.h"
 #include "ropras/pomdp/ParticleFilter.h"
 #include "ropras/pomdp/SearchStatistics.h"
@@ -131,6 +135,17 @@ namespace ropras::pomdp
         double weight = 1.0;
         EpisodeResult result;
         const std::size_t depletionsBefore = filter.depletions();
+        if (settings.planningParticles > 0)
+        {
+            // the belief handed to the solver and the solver's copy of it (32-bit particle indices)
+            const std::string what =
+                "planning particles (--planning-particles) " + std::to_string(settings.planningParticles);
+            checkedBytes(settings.planningParticles, 2 * sizeof(typename M::State), what);
+            if (settings.planningParticles > std::numeric_limits<std::uint32_t>::max())
+            {
+                throw Error(what + " exceed the solvers' 32-bit particle indices (at most 4294967295)");
+            }
+        }
         if (observer)
         {
             observer->onStart(world.state(), filter.particles());

@@ -30,8 +30,14 @@ namespace ropras::pomdp
         /** \brief The value of \a name or \a fallback; marks \a name as used. */
         double get(const std::string &name, double fallback) const;
 
-        /** \brief Like get() for a count: throws ropras::Error if the value is negative or not an integer. */
-        std::size_t getCount(const std::string &name, std::size_t fallback) const;
+        /// the largest count getCount() accepts unless given a smaller \a max
+        static constexpr double MAX_COUNT = 1e15;
+        /// the largest count read into an `unsigned` setting: 2^32 - 1
+        static constexpr double MAX_UNSIGNED = 4294967295.0;
+
+        /** \brief Like get() for a count: throws ropras::Error if the value is negative, not an integer or above
+            \a max (MAX_UNSIGNED for settings stored as `unsigned`, so that none is silently truncated). */
+        std::size_t getCount(const std::string &name, std::size_t fallback, double max = MAX_COUNT) const;
 
         /** \brief Throws ropras::Error naming every parameter that no get() read and listing the valid names
             (those read, and \a exempt) (\a context names the reader, e.g. "solver ropras3 on model tiger");

@@ -77,6 +77,9 @@ namespace ropras::pomdp
 
         std::size_t storedParticles() const noexcept { return data_.size(); }
 
+        /** \brief Bytes in use (segments and the space abandoned by moved ones; the capacity may be up to twice). */
+        std::size_t usedBytes() const noexcept { return data_.size() * sizeof(State); }
+
     private:
         void grow(Segment &segment)
         {

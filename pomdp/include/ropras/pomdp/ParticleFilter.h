@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ropras/core/Error.h"
+#include "ropras/core/MemoryLimit.h"
 #include "ropras/pomdp/BeliefView.h"
 #include "ropras/pomdp/Model.h"
 #include "ropras/pomdp/ParameterMap.h"
@@ -122,6 +123,9 @@ namespace ropras::pomdp
             {
                 throw Error("ParticleFilter: numParticles must be >= 1");
             }
+            // the particles, the resampling scratch, the weights, and the belief a solver gets and copies
+            checkedBytes(settings_.numParticles, 4 * sizeof(State) + sizeof(double),
+                         "parameter particles = " + std::to_string(settings_.numParticles) + " (particle filter)");
             if (settings_.reinvigorate && !hasReinvigorate<M>)
             {
                 throw Error("ParticleFilter: reinvigoration requested but the model has no reinvigorate()");

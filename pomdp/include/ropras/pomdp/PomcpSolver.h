@@ -33,16 +33,22 @@ namespace ropras::pomdp
         unsigned macroActionsPerNode{8};
         /** \brief Measure time spent in the model and in the reference policy. */
         bool profile{false};
+        /** \brief Memory cap of the tree (MiB): the search stops there and says so (SearchStatistics). */
+        double maxTreeMegabytes{detail::DEFAULT_MAX_TREE_MB};
 
-        /** \brief Reads ucb_c, depth, rollout_steps, macro_actions, profile; throws ropras::Error for bad values. */
+        /** \brief Reads ucb_c, depth, rollout_steps, macro_actions, profile, max_tree_mb; throws ropras::Error for bad
+         * values. */
         static PomcpSettings fromParameters(const ParameterMap &p)
         {
             PomcpSettings s;
             s.explorationConstant = p.get("ucb_c", s.explorationConstant);
-            s.maxDepth = static_cast<unsigned>(p.getCount("depth", s.maxDepth));
-            s.rolloutSteps = static_cast<unsigned>(p.getCount("rollout_steps", s.rolloutSteps));
-            s.macroActionsPerNode = static_cast<unsigned>(p.getCount("macro_actions", s.macroActionsPerNode));
+            s.maxDepth = static_cast<unsigned>(p.getCount("depth", s.maxDepth, ParameterMap::MAX_UNSIGNED));
+            s.rolloutSteps =
+                static_cast<unsigned>(p.getCount("rollout_steps", s.rolloutSteps, ParameterMap::MAX_UNSIGNED));
+            s.macroActionsPerNode =
+                static_cast<unsigned>(p.getCount("macro_actions", s.macroActionsPerNode, ParameterMap::MAX_UNSIGNED));
             s.profile = p.getCount("profile", 0) != 0;
+            s.maxTreeMegabytes = detail::maxTreeMegabytes(p, "POMCP");
             s.validate();
             return s;
         }
@@ -120,10 +126,16 @@ namespace ropras::pomdp
             std::size_t done = 0;
             while (!guard.exhausted(done))
             {
+                if (done > 0 && treeFull())  // at least one simulation, even when the root alone fills the cap
+                {
+                    stats_.memoryCapped = 1;
+                    break;
+                }
                 const State s = arena_.sample(beliefs_[root].particles, rng);
                 simulate(s, root, 0, rng);
                 ++done;
             }
+            stats_.treeBytes = treeBytes();
             stats_.simulations = done;
             stats_.seconds = guard.elapsed();
             stats_.beliefNodes = beliefs_.size();
@@ -178,6 +190,20 @@ namespace ropras::pomdp
             std::uint32_t visits{0};
             double q{0.0};
         };
+
+        /// bytes the tree uses (sizes, not capacities: the pools keep their capacity from one plan() to the next)
+        std::size_t treeBytes() const noexcept
+        {
+            return beliefs_.size() * sizeof(BeliefNode) + actions_.size() * sizeof(ActionNode) +
+                   macroPool_.size() * sizeof(Action) + arena_.usedBytes();
+        }
+
+        bool treeFull() const noexcept
+        {
+            const std::size_t largest =
+                std::max({beliefs_.size(), actions_.size(), macroPool_.size(), arena_.storedParticles()});
+            return detail::treeFull(treeBytes(), largest, settings_.maxTreeMegabytes);
+        }
 
         std::uint32_t newBeliefNode(std::uint64_t key)
         {

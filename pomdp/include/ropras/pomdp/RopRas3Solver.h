@@ -1,6 +1,7 @@
 #ifndef ROPRAS_POMDP_ROP_RAS3_SOLVER_H
 #define ROPRAS_POMDP_ROP_RAS3_SOLVER_H
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -38,8 +39,11 @@ namespace ropras::pomdp
         bool sampleAction{false};
         /** \brief Measure time spent in the model and in the reference policy (two clock reads per call). */
         bool profile{false};
+        /** \brief Memory cap of the tree (MiB): the search stops there and says so (SearchStatistics). */
+        double maxTreeMegabytes{detail::DEFAULT_MAX_TREE_MB};
 
-        /** \brief Reads eta, beta_a, alpha_a, depth, rollout_steps, max_particles, sample_action, profile;
+        /** \brief Reads eta, beta_a, alpha_a, depth, rollout_steps, max_particles, sample_action, profile,
+            max_tree_mb;
             throws ropras::Error for out-of-range values. */
         static RopRas3Settings fromParameters(const ParameterMap &p)
         {
@@ -47,11 +51,14 @@ namespace ropras::pomdp
             s.eta = p.get("eta", s.eta);
             s.betaA = p.get("beta_a", s.betaA);
             s.alphaA = p.get("alpha_a", s.alphaA);
-            s.maxDepth = static_cast<unsigned>(p.getCount("depth", s.maxDepth));
-            s.rolloutSteps = static_cast<unsigned>(p.getCount("rollout_steps", s.rolloutSteps));
-            s.maxParticlesPerNode = static_cast<unsigned>(p.getCount("max_particles", s.maxParticlesPerNode));
+            s.maxDepth = static_cast<unsigned>(p.getCount("depth", s.maxDepth, ParameterMap::MAX_UNSIGNED));
+            s.rolloutSteps =
+                static_cast<unsigned>(p.getCount("rollout_steps", s.rolloutSteps, ParameterMap::MAX_UNSIGNED));
+            s.maxParticlesPerNode =
+                static_cast<unsigned>(p.getCount("max_particles", s.maxParticlesPerNode, ParameterMap::MAX_UNSIGNED));
             s.sampleAction = p.getCount("sample_action", 0) != 0;
             s.profile = p.getCount("profile", 0) != 0;
+            s.maxTreeMegabytes = detail::maxTreeMegabytes(p, "ROP-RAS3");
             s.validate();
             return s;
         }
@@ -122,9 +129,15 @@ namespace ropras::pomdp
             std::size_t done = 0;
             while (!guard.exhausted(done))
             {
+                if (done > 0 && treeFull())  // at least one simulation, even when the root alone fills the cap
+                {
+                    stats_.memoryCapped = 1;
+                    break;
+                }
                 simulate(root, 0, rng);
                 ++done;
             }
+            stats_.treeBytes = treeBytes();
             stats_.simulations = done;
             stats_.seconds = guard.elapsed();
             stats_.beliefNodes = beliefs_.size();
@@ -181,6 +194,20 @@ namespace ropras::pomdp
             macroPool_.clear();
             arena_.clear();
             childArena_.clear();
+        }
+
+        /// bytes the tree uses (sizes, not capacities: the pools keep their capacity from one plan() to the next)
+        std::size_t treeBytes() const noexcept
+        {
+            return beliefs_.size() * sizeof(BeliefNode) + actions_.size() * sizeof(ActionNode) +
+                   macroPool_.size() * sizeof(Action) + arena_.usedBytes() + childArena_.usedBytes();
+        }
+
+        bool treeFull() const noexcept
+        {
+            const std::size_t largest = std::max({beliefs_.size(), actions_.size(), macroPool_.size(),
+                                                  arena_.storedParticles(), childArena_.storedParticles()});
+            return detail::treeFull(treeBytes(), largest, settings_.maxTreeMegabytes);
         }
 
         std::uint32_t newBeliefNode(std::uint64_t key)

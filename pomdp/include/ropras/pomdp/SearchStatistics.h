@@ -22,6 +22,11 @@ namespace ropras::pomdp
         double seconds{0.0};
         double referenceSeconds{0.0};
         double modelSeconds{0.0};
+        /** \brief Planning calls that stopped because the tree reached its memory cap (the solver parameter
+            max_tree_mb) before the budget was used up: 0 or 1 per call, summed by accumulate(). */
+        std::size_t memoryCapped{0};
+        /** \brief Bytes the search tree held at the end of the call (the largest over accumulated calls). */
+        std::size_t treeBytes{0};
         /** \brief Value estimate at the root (soft value V for reference-based solvers, max Q for UCB ones). */
         double rootValue{0.0};
 
@@ -35,6 +40,8 @@ namespace ropras::pomdp
             referenceRequested += other.referenceRequested;
             referenceFailed += other.referenceFailed;
             modelSteps += other.modelSteps;
+            memoryCapped += other.memoryCapped;
+            treeBytes = treeBytes > other.treeBytes ? treeBytes : other.treeBytes;
             seconds += other.seconds;
             referenceSeconds += other.referenceSeconds;
             modelSeconds += other.modelSeconds;

@@ -3,15 +3,46 @@
 
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
+#include "ropras/core/Error.h"
 #include "ropras/pomdp/MacroAction.h"
+#include "ropras/pomdp/ParameterMap.h"
 #include "ropras/pomdp/SearchStatistics.h"
 #include "ropras/pomdp/Solver.h"
 
 namespace ropras::pomdp::detail
 {
     /** \brief Pieces shared by the tree-search solvers (ROP-RAS3, POMCP, R-POMCP). */
+
+    /// default of the tree solvers' memory cap (parameter max_tree_mb): 1024 MiB
+    constexpr double DEFAULT_MAX_TREE_MB = 1024.0;
+    /// the largest max_tree_mb accepted (1 TiB)
+    constexpr double MAX_TREE_MB = 1048576.0;
+    /// elements a tree pool may hold: its nodes and particles are addressed by 32-bit indices, which must not wrap
+    constexpr std::size_t MAX_POOL_ELEMENTS = std::size_t(1) << 31;
+
+    /// reads the parameter max_tree_mb (in [1, MAX_TREE_MB]) of the solver \a solver
+    inline double maxTreeMegabytes(const ParameterMap &p, const std::string &solver)
+    {
+        const double mb = p.get("max_tree_mb", DEFAULT_MAX_TREE_MB);
+        if (!(mb >= 1.0 && mb <= MAX_TREE_MB))
+        {
+            throw Error(solver + ": max_tree_mb = " + std::to_string(mb) + " must be in [1, " +
+                        std::to_string(static_cast<long long>(MAX_TREE_MB)) + "] (MiB)");
+        }
+        return mb;
+    }
+
+    /** \brief The memory cap of a search tree: full when its pools use \a bytes >= \a maxMegabytes MiB (their
+        sizes: they keep their capacity from one search to the next) or the largest pool has \a largestPool >=
+        MAX_POOL_ELEMENTS elements. Checked before every simulation but the first; as pools grow by doubling, a
+        tree never holds more than twice the cap (three times while a pool moves). */
+    inline bool treeFull(std::size_t bytes, std::size_t largestPool, double maxMegabytes) noexcept
+    {
+        return static_cast<double>(bytes) >= maxMegabytes * 1048576.0 || largestPool >= MAX_POOL_ELEMENTS;
+    }
 
     /// the macro-action of an action node (fields macroOffset, macroLength) kept in the solver's flat pool
     template <class Action, class ActionNode>

@@ -62,8 +62,8 @@ namespace ropras::pomdp
             }
             if constexpr (hasActionSet<M>)
             {
-                const auto lo = static_cast<unsigned>(p.getCount("macro_min", 1));
-                const auto hi = static_cast<unsigned>(p.getCount("macro_max", lo));
+                const auto lo = static_cast<unsigned>(p.getCount("macro_min", 1, ParameterMap::MAX_UNSIGNED));
+                const auto hi = static_cast<unsigned>(p.getCount("macro_max", lo, ParameterMap::MAX_UNSIGNED));
                 return std::make_unique<RandomMacroPolicy<M>>(c.model, lo, hi);
             }
             else
@@ -107,7 +107,8 @@ namespace ropras::pomdp
                 {"bplan",
                  [](const ModelComponents<M> &c, const ParameterMap &p) -> std::unique_ptr<Solver<M>>
                  {
-                     const auto attempts = static_cast<unsigned>(p.getCount("attempts", 10));
+                     const auto attempts =
+                         static_cast<unsigned>(p.getCount("attempts", 10, ParameterMap::MAX_UNSIGNED));
                      p.getCount("profile", 0);  // accepted: B-plan always times its reference calls
                      return std::make_unique<BPlanSolver<M>>(c.model, informedPolicy(c, p, "bplan"), attempts);
                  }},

@@ -27,6 +27,15 @@ namespace ropras::scenarios
 
         bool owns(std::size_t episode) const noexcept { return episode % count == index; }
 
+        /// how many of the episodes 0 .. episodes-1 this shard owns (computed, not counted)
+        std::size_t ownedCount(std::size_t episodes) const noexcept
+        {
+            return episodes / count + (index < episodes % count ? 1 : 0);
+        }
+
+        /// the \a k-th episode this shard owns (k < ownedCount())
+        std::size_t ownedEpisode(std::size_t k) const noexcept { return index + k * count; }
+
         /// "i/N"
         std::string str() const;
     };
@@ -35,11 +44,14 @@ namespace ropras::scenarios
         so it does not depend on the thread that runs the episode or on the shard split. */
     std::uint64_t episodeSeed(std::uint64_t runSeed, std::size_t episode) noexcept;
 
+    /// the most episodes of one experiment (all shards together): every record is kept for the table
+    constexpr std::size_t MAX_EPISODES = 1000000;
+
     /** \brief One experiment: \c episodes episodes of one scenario with the same RunSettings. */
     struct ExperimentSettings
     {
         RunSettings run;
-        /// episodes of the whole experiment (all shards together), >= 1
+        /// episodes of the whole experiment (all shards together), in [1, MAX_EPISODES]
         std::size_t episodes{30};
         /// the run seed; episode e runs with episodeSeed(seed, e)
         std::uint64_t seed{1};
@@ -85,8 +97,9 @@ namespace ropras::scenarios
     /** \brief One JSON record for episode \a episode: experimentConfiguration() plus episode, episode_seed,
         success, terminal, discounted_return, undiscounted_return, steps, plans, invalid_plans, depletions,
         simulations, sims_per_call (mean per planning call), plan_time_s (mean seconds per call), ref_requested,
-        ref_failed, ref_failures (ref_failed / ref_requested, 0 when none was requested), max_depth and
-        wall_time_s (the episode's wall-clock seconds). */
+        ref_failed, ref_failures (ref_failed / ref_requested, 0 when none was requested), max_depth,
+        memory_capped_plans (planning calls stopped at the tree memory cap, parameter max_tree_mb), tree_mb_max
+        (the largest tree of the episode, MiB) and wall_time_s (the episode's wall-clock seconds). */
     nlohmann::json episodeRecord(const nlohmann::json &configuration, std::size_t episode, std::uint64_t seed,
                                  const pomdp::EpisodeResult &result, double wallSeconds);
 
@@ -94,11 +107,11 @@ namespace ropras::scenarios
     std::string recordingFileName(const std::string &scenario, const std::string &solver, std::size_t episode);
 
     /** \brief Runs the episodes of \a settings.shard in \a settings.threads threads and returns their records in
-        episode order. Everything is checked before a thread starts (episodes >= 1, the shard, the budget,
-        scenario.validate(), the record directory is created and writable): bad settings throw ropras::Error.
-        An exception inside an episode stops the remaining episodes and is rethrown (as ropras::Error naming
-        the episode). Same settings and seed: the same records (but for the timing keys) whatever the thread
-        count or shard split, exactly so with a simulation budget and a seeded planner. */
+        episode order. Everything is checked before a thread starts (episodes in [1, MAX_EPISODES], the shard, the
+       budget, scenario.validate(), the record directory is created and writable): bad settings throw ropras::Error. An
+       exception inside an episode stops the remaining episodes and is rethrown (as ropras::Error naming the episode).
+       Same settings and seed: the same records (but for the timing keys) whatever the thread count or shard split,
+       exactly so with a simulation budget and a seeded planner. */
     std::vector<nlohmann::json> runExperiment(const Scenario &scenario, const ExperimentSettings &settings,
                                               const ExperimentCallbacks &callbacks = ExperimentCallbacks());
 }  // namespace ropras::scenarios

@@ -55,10 +55,13 @@ namespace ropras::scenarios
         bool add(const nlohmann::json &record, const std::string &source);
 
         /** \brief Adds every line of a JSON-lines stream (blank lines are skipped); a malformed line throws
-            ropras::Error naming "name:line". Returns the number of records read. */
+            ropras::Error naming "name:line". A truncated record (a JSON object cut off before its end, as an
+            interrupted writer leaves it) is skipped with a warning naming "name:line". Returns the number of
+            records read. */
         std::size_t addJsonLines(std::istream &in, const std::string &name);
 
-        /** \brief addJsonLines() of a file; throws ropras::Error when it cannot be opened. */
+        /** \brief addJsonLines() of a file; throws ropras::Error when it cannot be opened, is not a regular file
+            or is larger than the input size limit (ropras::checkInputFile()). */
         std::size_t addFile(const std::string &path);
 
         /// episodes in the table (duplicates counted once)

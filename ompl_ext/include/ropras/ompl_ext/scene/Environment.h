@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "ropras/ompl_ext/scene/AttachedBody.h"
@@ -175,6 +176,8 @@ namespace ropras::ompl_ext
         };
         void writeQueryForm(const Object &object);
         std::vector<Object> objects_;
+        /// object name -> index into objects_ (so adding n objects costs O(n), not O(n^2) name comparisons)
+        std::unordered_map<std::string, int> index_;
         std::vector<SphereObstacle> spheres_;
         std::vector<BoxObstacle> boxes_;
         std::vector<CylinderObstacle> cylinders_;
