@@ -14,8 +14,8 @@
 
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
-#include "ProgressBar.h"
 #include "OutputChecks.h"
+#include "ProgressBar.h"
 #include "ropras/core/Error.h"
 #include "ropras/core/InputFile.h"
 #include "ropras/scenarios/ExperimentRunner.h"

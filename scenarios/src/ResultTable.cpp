@@ -373,7 +373,11 @@ namespace ropras::scenarios
             {
                 record = nlohmann::json::parse(line);
             }
-            catch (const nlohmann::json::exception &e)  // parse_error, and out_of_range for 1e400
+            catch (const nlohmann::json::out_of_range &e)  // a number beyond a double (1e400)
+            {
+                throw Error(source + ": malformed JSON: " + e.what());
+            }
+            catch (const nlohmann::json::parse_error &e)
             {
                 // an object cut off before its end (what a writer interrupted between its system calls leaves): the
                 // parser failed only when the line ran out, past its last byte
