@@ -14,7 +14,7 @@ ropras_cli_test(render.dev_zero 2 "recording '/dev/zero': is a character device"
 ropras_cli_test(run.config_dev_zero 2 "--config '/dev/zero': is a character device" ${ld} --config /dev/zero)
 ropras_cli_test(check_collision.urdf_too_large 2 "URDF '.*ropras_arm.urdf': the file is .*, more than the input size limit 100 bytes \\(ropras --max-input-size\\)"
                 --max-input-size 100 ${cc} --urdf ${arm_urdf} --scenes ${scene})
-ropras_cli_test(plan.scene_too_large_after 2 "scene '.*tabletop.yaml': the file is 4322 bytes, more than the input size limit 4096 bytes"
+ropras_cli_test(plan.scene_too_large_after 2 "the file is [0-9]+ bytes, more than the input size limit 4096 bytes"
                 ${plan} --max-input-size 4KiB)
 ropras_cli_test(table.too_large 2 "results file '.*missing_key_runs.jsonl': the file is .*, more than the input size limit 10 bytes"
                 --max-input-size 10 table ${in}/missing_key_runs.jsonl)

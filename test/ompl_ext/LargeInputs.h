@@ -25,13 +25,15 @@ namespace ropras::ompl_ext::test
         return out + "</robot>\n";
     }
 
-    /// two links; the second carries \a spheres spheres (radius 0.01, on a line 0.03 m apart) on one prismatic joint
+    /// two links; the second carries \a spheres spheres (radius 0.01, 0.03 m apart in rows of 1000 along x, the rows
+    /// 0.03 m apart along y: within the 100 m RobotModel accepts) on one prismatic joint
     inline std::string manySpheresUrdf(std::size_t spheres)
     {
         std::string out = "<robot name=\"spheres\">\n  <link name=\"base\"/>\n  <link name=\"body\">\n";
         for (std::size_t i = 0; i < spheres; ++i)
-            out += "    <collision><origin xyz=\"" + std::to_string(0.03 * static_cast<double>(i)) +
-                   " 0 0\"/><geometry><sphere radius=\"0.01\"/></geometry></collision>\n";
+            out += "    <collision><origin xyz=\"" + std::to_string(0.03 * static_cast<double>(i % 1000)) + " " +
+                   std::to_string(0.03 * static_cast<double>(i / 1000)) +
+                   " 0\"/><geometry><sphere radius=\"0.01\"/></geometry></collision>\n";
         out +=
             "  </link>\n  <joint name=\"x\" type=\"prismatic\"><parent link=\"base\"/><child link=\"body\"/>"
             "<axis xyz=\"0 0 1\"/><limit lower=\"0\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>\n";
