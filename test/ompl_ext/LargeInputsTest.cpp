@@ -4,6 +4,8 @@
 // result against closed forms; they assert no times (a quadratic setup shows as the test's timeout instead).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <cstddef>
 #include <set>
 #include <utility>
@@ -58,8 +60,9 @@ TEST(LargeInputs, OneLinkWithAHundredThousandSpheresLoads)
     const auto robot = RobotModel::fromUrdfString(test::manySpheresUrdf(100000), ".", "spheres.urdf");
     ASSERT_EQ(robot->spheres().size(), 100000u);
     EXPECT_TRUE(robot->selfCollisionPairs().empty());
-    // the link's bounding sphere encloses the line of spheres from x = 0 to x = 2999.97 (radius 0.01)
-    const double exact = (0.03 * 99999 + 0.02) / 2;
+    // the link's bounding sphere encloses the grid of spheres (x 0 to 29.97 m, y 0 to 2.97 m, radius 0.01): the
+    // smallest one is centred on the grid's middle, through its corners
+    const double exact = std::hypot(0.03 * 999, 0.03 * 99) / 2 + 0.01;
     EXPECT_GE(robot->collisionLinks()[0].boundRadius, exact - 1e-6);
     EXPECT_LE(robot->collisionLinks()[0].boundRadius, exact * 1.01);
 }
