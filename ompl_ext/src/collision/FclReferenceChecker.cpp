@@ -442,6 +442,20 @@ namespace ropras::ompl_ext
             return best;
         }
 
+        /// the first contact of the robot, else of its attached bodies; "" when none (both checkers' query)
+        std::string firstContact(const Body &body, const ObstacleScene &scene,
+                                 const std::vector<PosedAttachment> &attached)
+        {
+            const std::string robot = body.firstCollision(scene);
+            return robot.empty() ? attachedCollision(body, scene, attached) : robot;
+        }
+
+        double smallestDistance(const Body &body, const ObstacleScene &scene,
+                                const std::vector<PosedAttachment> &attached)
+        {
+            return std::min(body.signedDistance(scene), attachedDistance(body, scene, attached));
+        }
+
         void requireFinite(const RobotModel &robot, const double *q, const char *who)
         {
             for (std::size_t i = 0; i < robot.dof(); ++i)
@@ -513,30 +527,19 @@ namespace ropras::ompl_ext
 
     bool FclSphereChecker::isValid(const Environment &env, const double *q) const
     {
-        return robot_->withinBounds(q) &&
-               posedQuery(
-                   *robot_, *impl_, env, q,
-                   [](const auto &body, const ObstacleScene &scene, const auto &attached)
-                   { return body.firstCollision(scene).empty() && attachedCollision(body, scene, attached).empty(); });
+        return robot_->withinBounds(q) && posedQuery(*robot_, *impl_, env, q, firstContact).empty();
     }
 
     double FclSphereChecker::distance(const Environment &env, const double *q) const
     {
         requireFinite(*robot_, q, "FclSphereChecker::distance");
-        return posedQuery(*robot_, *impl_, env, q,
-                          [](const auto &body, const ObstacleScene &scene, const auto &attached)
-                          { return std::min(body.signedDistance(scene), attachedDistance(body, scene, attached)); });
+        return posedQuery(*robot_, *impl_, env, q, smallestDistance);
     }
 
     std::string FclSphereChecker::describeCollision(const Environment &env, const double *q) const
     {
         requireFinite(*robot_, q, "FclSphereChecker::describeCollision");
-        return posedQuery(*robot_, *impl_, env, q,
-                          [](const auto &body, const ObstacleScene &scene, const auto &attached)
-                          {
-                              const std::string robot = body.firstCollision(scene);
-                              return robot.empty() ? attachedCollision(body, scene, attached) : robot;
-                          });
+        return posedQuery(*robot_, *impl_, env, q, firstContact);
     }
 
     // ---------------------------------------------------------------------------------------------------------
@@ -644,29 +647,18 @@ namespace ropras::ompl_ext
 
     bool FclMeshChecker::isValid(const Environment &env, const double *q) const
     {
-        return robot_->withinBounds(q) &&
-               posedQuery(
-                   *robot_, *impl_, env, q,
-                   [](const auto &body, const ObstacleScene &scene, const auto &attached)
-                   { return body.firstCollision(scene).empty() && attachedCollision(body, scene, attached).empty(); });
+        return robot_->withinBounds(q) && posedQuery(*robot_, *impl_, env, q, firstContact).empty();
     }
 
     double FclMeshChecker::distance(const Environment &env, const double *q) const
     {
         requireFinite(*robot_, q, "FclMeshChecker::distance");
-        return posedQuery(*robot_, *impl_, env, q,
-                          [](const auto &body, const ObstacleScene &scene, const auto &attached)
-                          { return std::min(body.signedDistance(scene), attachedDistance(body, scene, attached)); });
+        return posedQuery(*robot_, *impl_, env, q, smallestDistance);
     }
 
     std::string FclMeshChecker::describeCollision(const Environment &env, const double *q) const
     {
         requireFinite(*robot_, q, "FclMeshChecker::describeCollision");
-        return posedQuery(*robot_, *impl_, env, q,
-                          [](const auto &body, const ObstacleScene &scene, const auto &attached)
-                          {
-                              const std::string robot = body.firstCollision(scene);
-                              return robot.empty() ? attachedCollision(body, scene, attached) : robot;
-                          });
+        return posedQuery(*robot_, *impl_, env, q, firstContact);
     }
 }  // namespace ropras::ompl_ext
