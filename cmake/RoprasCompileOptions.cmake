@@ -15,14 +15,20 @@ endif()
 
 # Helper: a project library with the usual options.
 function(ropras_add_library name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;PUBLIC_LIBS;PRIVATE_LIBS" ${ARGN})
+  # INCLUDE_DIRS: subfolders that each hold an include/ (scenarios/<family>/include); default: this folder's include/.
+  cmake_parse_arguments(ARG "" "" "SOURCES;PUBLIC_LIBS;PRIVATE_LIBS;INCLUDE_DIRS" ${ARGN})
   add_library(ropras_${name} ${ARG_SOURCES})
   add_library(ropras::${name} ALIAS ropras_${name})
   set_target_properties(ropras_${name} PROPERTIES EXPORT_NAME ${name} OUTPUT_NAME ropras_${name})
-  target_include_directories(ropras_${name} PUBLIC $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
-                                                   $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  if(NOT ARG_INCLUDE_DIRS)
+    set(ARG_INCLUDE_DIRS ".")
+  endif()
+  foreach(dir IN LISTS ARG_INCLUDE_DIRS)
+    target_include_directories(ropras_${name} PUBLIC $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/${dir}/include>)
+    install(DIRECTORY ${dir}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  endforeach()
+  target_include_directories(ropras_${name} PUBLIC $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   target_link_libraries(ropras_${name} PUBLIC ${ARG_PUBLIC_LIBS} PRIVATE ${ARG_PRIVATE_LIBS}
                                                                           $<BUILD_INTERFACE:ropras_warnings>)
   install(TARGETS ropras_${name} EXPORT roprasTargets)
-  install(DIRECTORY include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endfunction()

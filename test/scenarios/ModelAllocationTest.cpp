@@ -8,7 +8,7 @@
 #include "AllocationCounter.h"
 #include "NavigationTestUtil.h"
 #include "ropras/pomdp/Model.h"
-#include "ropras/scenarios/MultiDroneScenario.h"
+#include "ropras/scenarios/multi-drone/MultiDroneScenario.h"
 
 namespace
 {

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "ropras/core/Error.h"
-#include "ropras/scenarios/MultiDroneModel.h"
-#include "ropras/scenarios/MultiDroneScenario.h"
-#include "ropras/scenarios/MultiDroneWorld.h"
+#include "ropras/scenarios/multi-drone/MultiDroneModel.h"
+#include "ropras/scenarios/multi-drone/MultiDroneScenario.h"
+#include "ropras/scenarios/multi-drone/MultiDroneWorld.h"
 
 namespace ropras::scenarios
 {

@@ -14,8 +14,8 @@
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/scene/Environment.h"
 #include "ropras/pomdp/OmplPathPlanner.h"
-#include "ropras/scenarios/MultiDronePlanning.h"
-#include "ropras/scenarios/MultiDroneScenario.h"
+#include "ropras/scenarios/multi-drone/MultiDronePlanning.h"
+#include "ropras/scenarios/multi-drone/MultiDroneScenario.h"
 
 namespace ropras::scenarios
 {

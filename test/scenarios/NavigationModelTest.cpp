@@ -6,8 +6,8 @@
 
 #include "ExpectError.h"
 #include "NavigationTestUtil.h"
-#include "ropras/scenarios/NavigationPlanning.h"
-#include "ropras/scenarios/NavigationWorld.h"
+#include "ropras/scenarios/navigation/NavigationPlanning.h"
+#include "ropras/scenarios/navigation/NavigationWorld.h"
 
 namespace ropras::scenarios::test
 {

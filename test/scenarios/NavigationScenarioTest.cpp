@@ -6,7 +6,7 @@
 
 #include "ExpectError.h"
 #include "NavigationTestUtil.h"
-#include "ropras/scenarios/NavigationPlanning.h"
+#include "ropras/scenarios/navigation/NavigationPlanning.h"
 
 namespace ropras::scenarios::test
 {

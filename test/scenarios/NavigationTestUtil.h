@@ -9,8 +9,8 @@
 #include <string>
 
 #include "ropras/scenarios/ModelScenario.h"
-#include "ropras/scenarios/NavigationModel.h"
 #include "ropras/scenarios/ScenarioRegistry.h"
+#include "ropras/scenarios/navigation/NavigationModel.h"
 
 namespace ropras::scenarios::test
 {

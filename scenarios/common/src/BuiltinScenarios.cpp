@@ -1,0 +1,12 @@
+#include "BuiltinScenarios.h"
+
+namespace ropras::scenarios::detail
+{
+    void addBuiltinScenarios(ScenarioRegistry &registry)
+    {
+        addLightDarkScenario(registry);
+        addMaze2DScenario(registry);
+        addRandom3DScenarios(registry);
+        addMultiDroneScenario(registry);
+    }
+}  // namespace ropras::scenarios::detail

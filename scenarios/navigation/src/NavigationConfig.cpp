@@ -1,0 +1,333 @@
+#include "ropras/scenarios/navigation/NavigationConfig.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "ropras/core/Error.h"
+
+namespace ropras::scenarios
+{
+    namespace
+    {
+        class Reader
+        {
+        public:
+            Reader(const std::string &scenario, const nlohmann::json &json) : scenario_(scenario), json_(json)
+            {
+                if (!json_.is_object())
+                {
+                    fail("", "the configuration must be a JSON object");
+                }
+            }
+
+            [[noreturn]] void fail(const std::string &key, const std::string &problem) const
+            {
+                throw Error("scenario " + scenario_ + ": " + (key.empty() ? "" : "key \"" + key + "\" ") + problem);
+            }
+
+            const nlohmann::json &at(const std::string &key) const
+            {
+                const auto it = json_.find(key);
+                if (it == json_.end())
+                {
+                    fail(key, "is missing");
+                }
+                return *it;
+            }
+
+            double number(const std::string &key, const nlohmann::json &value) const
+            {
+                if (!value.is_number())
+                {
+                    fail(key, "must be a number, not " + value.dump());
+                }
+                const double v = value.get<double>();
+                if (!std::isfinite(v))
+                {
+                    fail(key, "= " + value.dump() + " is not finite");
+                }
+                return v;
+            }
+            double number(const std::string &key) const { return number(key, at(key)); }
+
+            double positive(const std::string &key) const
+            {
+                const double v = number(key);
+                if (!(v > 0.0))
+                {
+                    fail(key, "= " + nlohmann::json(v).dump() + " must be > 0");
+                }
+                return v;
+            }
+
+            double nonNegative(const std::string &key) const
+            {
+                const double v = number(key);
+                if (!(v >= 0.0))
+                {
+                    fail(key, "= " + nlohmann::json(v).dump() + " must be >= 0");
+                }
+                return v;
+            }
+
+            std::array<double, 3> point(const std::string &key, const nlohmann::json &value, int dims) const
+            {
+                if (!value.is_array() || value.size() != static_cast<std::size_t>(dims))
+                {
+                    fail(key, "must be an array of " + std::to_string(dims) + " numbers, not " + value.dump());
+                }
+                std::array<double, 3> p{{0.0, 0.0, 0.0}};
+                for (int k = 0; k < dims; ++k)
+                {
+                    p[k] = number(key, value[k]);
+                }
+                return p;
+            }
+
+            NavBox box(const std::string &key, const nlohmann::json &value, int dims) const
+            {
+                if (!value.is_array() || value.size() != 2)
+                {
+                    fail(key, "must be a box [[lo...], [hi...]], not " + value.dump());
+                }
+                NavBox b;
+                b.lo = point(key, value[0], dims);
+                b.hi = point(key, value[1], dims);
+                if (dims == 2)
+                {
+                    b.lo[2] = -1.0;
+                    b.hi[2] = 1.0;
+                }
+                for (int k = 0; k < dims; ++k)
+                {
+                    if (!(b.lo[k] < b.hi[k]))
+                    {
+                        fail(key, "= " + value.dump() + " has lo >= hi on axis " + std::to_string(k));
+                    }
+                }
+                return b;
+            }
+
+            std::vector<NavBox> boxes(const std::string &key, int dims) const
+            {
+                const auto &list = at(key);
+                if (!list.is_array())
+                {
+                    fail(key, "must be an array of boxes, not " + list.dump());
+                }
+                std::vector<NavBox> out;
+                for (std::size_t i = 0; i < list.size(); ++i)
+                {
+                    out.push_back(box(key + "[" + std::to_string(i) + "]", list[i], dims));
+                }
+                return out;
+            }
+
+        private:
+            std::string scenario_;
+            const nlohmann::json &json_;
+        };
+
+        std::string pointString(const std::array<double, 3> &p, int dims)
+        {
+            std::ostringstream s;
+            s << "(";
+            for (int k = 0; k < dims; ++k)
+            {
+                s << (k ? ", " : "") << p[k];
+            }
+            s << ")";
+            return s.str();
+        }
+    }  // namespace
+
+    NavigationConfig parseNavigationConfig(const std::string &scenario, const nlohmann::json &json)
+    {
+        Reader r(scenario, json);
+        NavigationConfig c;
+        c.scenario = scenario;
+        c.json = json;
+        const double dims = r.number("dims");
+        if (dims != 2.0 && dims != 3.0)
+        {
+            r.fail("dims", "= " + std::to_string(dims) + " must be 2 or 3");
+        }
+        c.dims = static_cast<int>(dims);
+        c.bounds = r.box("bounds", r.at("bounds"), c.dims);
+        if (c.dims == 2)
+        {
+            c.bounds.lo[2] = 0.0;
+            c.bounds.hi[2] = 0.0;
+        }
+        c.stepLength = r.positive("step");
+        c.slip = r.nonNegative("slip");
+        if (c.slip > 1.0)
+        {
+            r.fail("slip", "= " + nlohmann::json(c.slip).dump() + " must be in [0, 1]");
+        }
+        c.robotRadius = r.positive("robot_radius");
+        c.stepReward = r.number("step_reward");
+        c.goalReward = r.number("goal_reward");
+        c.dangerReward = r.number("danger_reward");
+        c.goal = r.box("goal", r.at("goal"), c.dims);
+        c.walls = r.boxes("walls", c.dims);
+        c.obstacles = r.boxes("obstacles", c.dims);
+        c.dangerZones = r.boxes("danger_zones", c.dims);
+        c.observationZones = r.boxes("observation_zones", c.dims);
+        c.observationSigma = r.positive("observation_sigma");
+        c.observationBin = r.positive("observation_bin");
+        c.initialSigma = r.nonNegative("initial_sigma");
+        c.reinvigorateSigma = r.nonNegative("reinvigorate_sigma");
+        c.discount = r.positive("discount");
+        if (!(c.discount < 1.0))
+        {
+            r.fail("discount", "= " + nlohmann::json(c.discount).dump() + " must be in (0, 1)");
+        }
+        const double horizon = r.positive("horizon");
+        if (horizon != std::floor(horizon) || horizon > 1e7)
+        {
+            r.fail("horizon", "= " + std::to_string(horizon) + " must be a positive integer");
+        }
+        c.horizon = static_cast<std::size_t>(horizon);
+        c.planSeconds = r.positive("plan_seconds");
+        c.referencePlanTime = r.positive("reference_plan_time");
+        c.planResolution = r.positive("plan_resolution");
+        c.plannerRange = r.positive("planner_range");
+        c.dangerMargin = r.nonNegative("danger_margin");
+        const auto &heuristic = r.at("heuristic_value");
+        if (!heuristic.is_boolean())
+        {
+            r.fail("heuristic_value", "must be true or false, not " + heuristic.dump());
+        }
+        c.heuristicValue = heuristic.get<bool>();
+        const auto &evidence = r.at("termination_evidence");
+        if (!evidence.is_boolean())
+        {
+            r.fail("termination_evidence", "must be true or false, not " + evidence.dump());
+        }
+        c.terminationEvidence = evidence.get<bool>();
+
+        const auto &defaults = r.at("defaults");
+        if (!defaults.is_object())
+        {
+            r.fail("defaults", "must be an object of solver parameters, not " + defaults.dump());
+        }
+        for (const auto &item : defaults.items())
+        {
+            c.defaults[item.key()] = r.number("defaults." + item.key(), item.value());
+        }
+
+        // Boxes inside the bounds (the goal and every zone; walls and obstacles may touch the border).
+        const auto inside = [&](const std::string &key, const NavBox &b)
+        {
+            for (int k = 0; k < c.dims; ++k)
+            {
+                if (b.lo[k] < c.bounds.lo[k] || b.hi[k] > c.bounds.hi[k])
+                {
+                    r.fail(key, "= " + boxToJson(b, c.dims).dump() + " lies outside the bounds " +
+                                    boxToJson(c.bounds, c.dims).dump());
+                }
+            }
+        };
+        inside("goal", c.goal);
+        const std::pair<const char *, const std::vector<NavBox> *> lists[] = {
+            {"walls", &c.walls},
+            {"obstacles", &c.obstacles},
+            {"danger_zones", &c.dangerZones},
+            {"observation_zones", &c.observationZones}};
+        for (const auto &list : lists)
+        {
+            for (std::size_t i = 0; i < list.second->size(); ++i)
+            {
+                inside(std::string(list.first) + "[" + std::to_string(i) + "]", (*list.second)[i]);
+            }
+        }
+
+        const auto &starts = r.at("starts");
+        if (!starts.is_array() || starts.empty())
+        {
+            r.fail("starts", "must be a non-empty array of positions, not " + starts.dump());
+        }
+        for (std::size_t i = 0; i < starts.size(); ++i)
+        {
+            const std::string key = "starts[" + std::to_string(i) + "]";
+            auto p = r.point(key, starts[i], c.dims);
+            for (int k = 0; k < c.dims; ++k)
+            {
+                if (p[k] < c.bounds.lo[k] || p[k] > c.bounds.hi[k])
+                {
+                    r.fail(key, "= " + pointString(p, c.dims) + " lies outside the bounds");
+                }
+            }
+            for (const auto *list : {&c.walls, &c.obstacles})
+            {
+                for (const auto &b : *list)
+                {
+                    if (b.distance(p.data()) < c.robotRadius)
+                    {
+                        r.fail(key, "= " + pointString(p, c.dims) + " is in collision (robot_radius " +
+                                        nlohmann::json(c.robotRadius).dump() + ") with the box " +
+                                        boxToJson(b, c.dims).dump());
+                    }
+                }
+            }
+            for (const auto &b : c.dangerZones)
+            {
+                if (b.contains(p.data()))
+                {
+                    r.fail(key,
+                           "= " + pointString(p, c.dims) + " lies in the danger zone " + boxToJson(b, c.dims).dump());
+                }
+            }
+            if (c.goal.contains(p.data()))
+            {
+                r.fail(key, "= " + pointString(p, c.dims) + " lies in the goal");
+            }
+            c.starts.push_back(p);
+        }
+        return c;
+    }
+
+    nlohmann::json boxToJson(const NavBox &box, int dims)
+    {
+        nlohmann::json lo = nlohmann::json::array(), hi = nlohmann::json::array();
+        for (int k = 0; k < dims; ++k)
+        {
+            lo.push_back(box.lo[k]);
+            hi.push_back(box.hi[k]);
+        }
+        return nlohmann::json::array({lo, hi});
+    }
+
+    nlohmann::json navigationScene(const NavigationConfig &c)
+    {
+        const auto list = [&](const std::vector<NavBox> &boxes)
+        {
+            nlohmann::json out = nlohmann::json::array();
+            for (const auto &b : boxes)
+            {
+                out.push_back(boxToJson(b, c.dims));
+            }
+            return out;
+        };
+        nlohmann::json starts = nlohmann::json::array();
+        for (const auto &s : c.starts)
+        {
+            nlohmann::json p = nlohmann::json::array();
+            for (int k = 0; k < c.dims; ++k)
+            {
+                p.push_back(s[k]);
+            }
+            starts.push_back(p);
+        }
+        return {{"dims", c.dims},
+                {"bounds", boxToJson(c.bounds, c.dims)},
+                {"walls", list(c.walls)},
+                {"obstacles", list(c.obstacles)},
+                {"danger_zones", list(c.dangerZones)},
+                {"observation_zones", list(c.observationZones)},
+                {"goal", boxToJson(c.goal, c.dims)},
+                {"starts", starts},
+                {"robot_radius", c.robotRadius}};
+    }
+}  // namespace ropras::scenarios
