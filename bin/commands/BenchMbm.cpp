@@ -184,8 +184,13 @@ namespace
         // time limit or exact solution, in one non-threaded condition: the same as plannerOr(timed, exactSoln) with
         // one evaluation instead of three. Planners poll it once per iteration, inside the timed region, so the
         // deadline is read from the coarse clock (about 7 ns instead of 30 here; it lags by at most one tick,
-        // 4 ms). Limits beyond 1e9 s (31 years) mean "no limit": they saturate instead of overflowing.
-        const std::int64_t deadline = coarseNanoseconds() + static_cast<std::int64_t>(std::min(a.time, 1e9) * 1e9);
+        // 4 ms). The deadline itself is set from the precise clock (the same CLOCK_MONOTONIC, not truncated to
+        // the last tick), so a run never stops before its limit. Limits beyond 1e9 s (31 years) mean "no limit":
+        // they saturate instead of overflowing.
+        timespec start{};
+        clock_gettime(CLOCK_MONOTONIC, &start);
+        const std::int64_t deadline = static_cast<std::int64_t>(start.tv_sec) * 1000000000 + start.tv_nsec +
+                                      static_cast<std::int64_t>(std::min(a.time, 1e9) * 1e9);
         const ob::ProblemDefinition *pdef = ss.getProblemDefinition().get();
         const ob::PlannerTerminationCondition ptc(
             [deadline, pdef] { return pdef->hasExactSolution() || coarseNanoseconds() > deadline; });
