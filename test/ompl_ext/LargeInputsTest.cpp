@@ -126,7 +126,7 @@ namespace
     }
 }  // namespace
 
-// A scene file of 100 000 boxes took 99 s and 1.4 GB: yaml-cpp's node tree of the whole file (about 2.5 KB per YAML
+// A scene file of 100 000 boxes took 99 s and 1.4 GB: yaml-cpp's node tree of the whole file (about 0.5 KB per YAML
 // node) and a walk over it. Each object is now read as soon as the parser has passed it and then dropped, so the
 // heap holds the objects kept (the Environment) and one object's YAML at a time. Counted, not timed: 4x the boxes
 // make 4x the allocations and 4x the peak heap (a step quadratic in memory or allocations would make them 16x), and
