@@ -1,7 +1,5 @@
 #include "ropras/ompl_ext/scene/SceneYaml.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -11,6 +9,7 @@
 
 #include "ropras/core/Error.h"
 #include "ropras/core/InputFile.h"
+#include "scene/YamlTree.h"
 
 namespace ropras::ompl_ext
 {
@@ -19,126 +18,66 @@ namespace ropras::ompl_ext
         /// quaternions whose norm is within this of 1 are normalized; others are rejected
         constexpr double QUATERNION_NORM_TOLERANCE = 1e-2;
 
-        /// Reads one YAML document and reports every problem as "source:line: where: what".
+        /// Reads the values of one YAML document and reports every problem as "source:line: where: what".
         class Reader
         {
         public:
             explicit Reader(std::string source) : source_(std::move(source)) {}
 
-            [[noreturn]] void fail(const YAML::Node &node, const std::string &where, const std::string &what) const
+            [[noreturn]] void fail(const YamlNode &node, const std::string &where, const std::string &what) const
             {
-                std::ostringstream msg;
-                msg << source_;
-                if (node.IsDefined() && node.Mark().line >= 0)
-                    msg << ':' << node.Mark().line + 1;
-                msg << ": " << where << ": " << what;
-                throw Error(msg.str());
-            }
-
-            /** yaml-cpp keeps one of two equal keys of a mapping without a word: a scene whose second `world:` or
-                request whose second `position:` silently wins or loses. Every mapping is checked (iteratively: no
-                recursion depth to exhaust). */
-            void rejectDuplicateKeys(const YAML::Node &root) const
-            {
-                constexpr std::size_t MAX_NODES = 50000000;  // aliases can make a small file a huge tree
-                std::vector<YAML::Node> pending{root};
-                for (std::size_t visited = 0; !pending.empty(); ++visited)
-                {
-                    const YAML::Node node = pending.back();
-                    pending.pop_back();
-                    if (visited > MAX_NODES)
-                        fail(
-                            root, "document",
-                            "more than " + std::to_string(MAX_NODES) + " YAML nodes (aliases repeating a large node?)");
-                    if (node.IsSequence())
-                        for (const YAML::Node &item : node)
-                            pending.push_back(item);
-                    if (!node.IsMap())
-                        continue;
-                    std::map<std::string, int> lines;
-                    for (const auto &entry : node)
-                    {
-                        const std::string key = entry.first.IsScalar() ? entry.first.Scalar() : "";
-                        const auto [it, fresh] = lines.emplace(key, entry.first.Mark().line + 1);
-                        if (!fresh && entry.first.IsScalar())
-                            fail(entry.first, "key '" + key + "'",
-                                 "given twice in one mapping (first on line " + std::to_string(it->second) + ")");
-                        pending.push_back(entry.second);
-                    }
-                }
-            }
-
-            YAML::Node parse(const std::string &text) const
-            {
-                try
-                {
-                    YAML::Node root = YAML::Load(text);
-                    rejectDuplicateKeys(root);
-                    return root;
-                }
-                catch (const YAML::Exception &e)
-                {
-                    std::ostringstream msg;
-                    msg << source_ << ':' << e.mark.line + 1 << ": malformed YAML: " << e.msg;
-                    throw Error(msg.str());
-                }
+                throwYamlError(source_, node.isDefined() ? node.line() : -1, where, what);
             }
 
             /// node[key], which must exist
-            YAML::Node child(const YAML::Node &node, const std::string &key, const std::string &where) const
+            YamlNode child(const YamlNode &node, const std::string &key, const std::string &where) const
             {
-                if (!node.IsMap())
+                if (!node.isMap())
                     fail(node, where, "expected a mapping with key '" + key + "'");
-                YAML::Node value = node[key];
-                if (!value.IsDefined() || value.IsNull())
+                YamlNode value = node[key];
+                if (!value.isDefined() || value.isNull())
                     fail(node, where, "missing key '" + key + "'");
                 return value;
             }
 
-            YAML::Node sequence(const YAML::Node &node, const std::string &where) const
+            YamlNode sequence(const YamlNode &node, const std::string &where) const
             {
-                if (!node.IsSequence())
+                if (!node.isSequence())
                     fail(node, where, "expected a list");
                 return node;
             }
 
-            double number(const YAML::Node &node, const std::string &where) const
+            double number(const YamlNode &node, const std::string &where) const
             {
-                if (!node.IsScalar())
+                if (!node.isScalar())
                     fail(node, where, "expected a number");
                 double value = 0.0;
-                try
-                {
-                    value = node.as<double>();
-                }
-                catch (const YAML::Exception &)
-                {
-                    fail(node, where, "'" + node.Scalar() + "' is not a number");
-                }
+                if (!node.toDouble(value))
+                    fail(node, where, "'" + node.scalar() + "' is not a number");
                 if (!std::isfinite(value))
-                    fail(node, where, "value '" + node.Scalar() + "' is not finite");
+                    fail(node, where, "value '" + node.scalar() + "' is not finite");
                 return value;
             }
 
-            std::string string(const YAML::Node &node, const std::string &where) const
+            std::string string(const YamlNode &node, const std::string &where) const
             {
-                if (!node.IsScalar())
+                if (!node.isScalar())
                     fail(node, where, "expected a string");
-                return node.Scalar();
+                return node.scalar();
             }
 
             /// [x, y, z] or {x: .., y: .., z: ..}
-            Eigen::Vector3d vector3(const YAML::Node &node, const std::string &where) const
+            Eigen::Vector3d vector3(const YamlNode &node, const std::string &where) const
             {
                 Eigen::Vector3d v;
-                if (node.IsSequence())
+                if (node.isSequence())
                 {
                     if (node.size() != 3)
                         fail(node, where, "expected 3 values, got " + std::to_string(node.size()));
                     for (std::size_t i = 0; i < 3; ++i)
                         v[int(i)] = number(node[i], where + "[" + std::to_string(i) + "]");
                 }
-                else if (node.IsMap())
+                else if (node.isMap())
                 {
                     const char *keys[3] = {"x", "y", "z"};
                     for (int i = 0; i < 3; ++i)
@@ -150,10 +89,10 @@ namespace ropras::ompl_ext
             }
 
             /// [x, y, z, w] or {x, y, z, w}; near-unit quaternions are normalized, others rejected
-            Eigen::Quaterniond quaternion(const YAML::Node &node, const std::string &where) const
+            Eigen::Quaterniond quaternion(const YamlNode &node, const std::string &where) const
             {
                 double c[4];
-                if (node.IsSequence())
+                if (node.isSequence())
                 {
                     if (node.size() != 4)
                         fail(node, where,
@@ -162,7 +101,7 @@ namespace ropras::ompl_ext
                     for (std::size_t i = 0; i < 4; ++i)
                         c[i] = number(node[i], where + "[" + std::to_string(i) + "]");
                 }
-                else if (node.IsMap())
+                else if (node.isMap())
                 {
                     const char *keys[4] = {"x", "y", "z", "w"};
                     for (int i = 0; i < 4; ++i)
@@ -183,9 +122,9 @@ namespace ropras::ompl_ext
                 return q;
             }
 
-            Eigen::Isometry3d pose(const YAML::Node &node, const std::string &where) const
+            Eigen::Isometry3d pose(const YamlNode &node, const std::string &where) const
             {
-                if (!node.IsMap())
+                if (!node.isMap())
                     fail(node, where, "expected a pose {position, orientation}");
                 Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
                 pose.translation() = vector3(child(node, "position", where), where + ".position");
@@ -206,16 +145,16 @@ namespace ropras::ompl_ext
             return s;
         }
 
-        bool nonEmpty(const YAML::Node &node)
+        bool nonEmpty(const YamlNode &node)
         {
-            return node.IsDefined() && !node.IsNull() && !(node.IsSequence() && node.size() == 0);
+            return node.isDefined() && !node.isNull() && !(node.isSequence() && node.size() == 0);
         }
 
         /// one primitive (shape_msgs/SolidPrimitive) with its pose in the object frame
-        Shape readPrimitive(const Reader &reader, const YAML::Node &node, const Eigen::Isometry3d &pose,
+        Shape readPrimitive(const Reader &reader, const YamlNode &node, const Eigen::Isometry3d &pose,
                             const std::string &where)
         {
-            const YAML::Node typeNode = reader.child(node, "type", where);
+            const YamlNode typeNode = reader.child(node, "type", where);
             const std::string typeText = lower(reader.string(typeNode, where + ".type"));
             // SolidPrimitive constants: BOX = 1, SPHERE = 2, CYLINDER = 3, CONE = 4
             std::string type;
@@ -228,9 +167,9 @@ namespace ropras::ompl_ext
             else
                 reader.fail(
                     typeNode, where + ".type",
-                    "unsupported primitive type '" + typeNode.Scalar() + "' (expected box, sphere or cylinder)");
+                    "unsupported primitive type '" + typeNode.scalar() + "' (expected box, sphere or cylinder)");
 
-            const YAML::Node dims = reader.sequence(reader.child(node, "dimensions", where), where + ".dimensions");
+            const YamlNode dims = reader.sequence(reader.child(node, "dimensions", where), where + ".dimensions");
             const std::size_t expected = type == "box" ? 3 : type == "sphere" ? 1 : 2;
             if (dims.size() != expected)
             {
@@ -258,11 +197,10 @@ namespace ropras::ompl_ext
         }
 
         /// the primitives of a CollisionObject with their poses (in the object frame)
-        std::vector<Shape> readShapes(const Reader &reader, const YAML::Node &node, const std::string &at)
+        std::vector<Shape> readShapes(const Reader &reader, const YamlNode &node, const std::string &at)
         {
-            const YAML::Node primitives = reader.sequence(reader.child(node, "primitives", at), at + ".primitives");
-            const YAML::Node poses =
-                reader.sequence(reader.child(node, "primitive_poses", at), at + ".primitive_poses");
+            const YamlNode primitives = reader.sequence(reader.child(node, "primitives", at), at + ".primitives");
+            const YamlNode poses = reader.sequence(reader.child(node, "primitive_poses", at), at + ".primitive_poses");
             if (primitives.size() == 0)
                 reader.fail(primitives, at + ".primitives", "object has no primitives");
             if (primitives.size() != poses.size())
@@ -280,13 +218,13 @@ namespace ropras::ompl_ext
             return shapes;
         }
 
-        void readCollisionObject(const Reader &reader, const YAML::Node &node, const std::string &where,
+        void readCollisionObject(const Reader &reader, const YamlNode &node, const std::string &where,
                                  std::set<std::string> &ids, Environment &env)
         {
-            if (!node.IsMap())
+            if (!node.isMap())
                 reader.fail(node, where,
                             "expected a collision object (a mapping with id, primitives, primitive_poses)");
-            const YAML::Node idNode = reader.child(node, "id", where);
+            const YamlNode idNode = reader.child(node, "id", where);
             const std::string id = reader.string(idNode, where + ".id");
             if (id.empty())
                 reader.fail(idNode, where + ".id", "empty object id");
@@ -294,13 +232,13 @@ namespace ropras::ompl_ext
             if (!ids.insert(id).second)
                 reader.fail(idNode, at, "duplicate object id '" + id + "'");
 
-            if (const YAML::Node op = node["operation"]; op.IsDefined() && !op.IsNull())
+            if (const YamlNode op = node["operation"]; op.isDefined() && !op.isNull())
             {
                 const std::string text = lower(reader.string(op, at + ".operation"));
                 // CollisionObject constants: ADD = 0, REMOVE = 1, APPEND = 2, MOVE = 3
                 if (text != "0" && text != "add")
                     reader.fail(op, at + ".operation",
-                                "only ADD (0) is supported in a scene, got '" + op.Scalar() + "'");
+                                "only ADD (0) is supported in a scene, got '" + op.scalar() + "'");
             }
             for (const char *unsupported : {"meshes", "planes"})
             {
@@ -311,7 +249,7 @@ namespace ropras::ompl_ext
             }
 
             Eigen::Isometry3d objectPose = Eigen::Isometry3d::Identity();
-            if (const YAML::Node p = node["pose"]; p.IsDefined() && !p.IsNull())
+            if (const YamlNode p = node["pose"]; p.isDefined() && !p.isNull())
                 objectPose = reader.pose(p, at + ".pose");
             std::vector<Shape> shapes = readShapes(reader, node, at);
             try
@@ -325,17 +263,17 @@ namespace ropras::ompl_ext
         }
 
         /// robot_state.attached_collision_objects[i]: attached to the link, the object's pose in the link frame
-        void readAttachedObject(const Reader &reader, const YAML::Node &node, const std::string &where,
+        void readAttachedObject(const Reader &reader, const YamlNode &node, const std::string &where,
                                 std::set<std::string> &ids, const std::shared_ptr<const RobotModel> &robot,
                                 Environment &env)
         {
-            if (!node.IsMap())
+            if (!node.isMap())
                 reader.fail(node, where, "expected an attached collision object (a mapping with link_name, object)");
             const std::string link = reader.string(reader.child(node, "link_name", where), where + ".link_name");
-            const YAML::Node object = reader.child(node, "object", where);
-            if (!object.IsMap())
+            const YamlNode object = reader.child(node, "object", where);
+            if (!object.isMap())
                 reader.fail(object, where + ".object", "expected a collision object (id, primitives, primitive_poses)");
-            const YAML::Node idNode = reader.child(object, "id", where + ".object");
+            const YamlNode idNode = reader.child(object, "id", where + ".object");
             const std::string id = reader.string(idNode, where + ".object.id");
             if (id.empty())
                 reader.fail(idNode, where + ".object.id", "empty object id");
@@ -345,7 +283,7 @@ namespace ropras::ompl_ext
             if (!robot)
                 reader.fail(node, at,
                             "attached collision objects need the robot model (load the scene with the robot)");
-            if (const YAML::Node header = object["header"]; header.IsMap() && header["frame_id"].IsDefined())
+            if (const YamlNode header = object["header"]; header.isMap() && header["frame_id"].isDefined())
             {
                 const std::string frame = reader.string(header["frame_id"], at + ".object.header.frame_id");
                 if (!frame.empty() && frame != link)
@@ -361,10 +299,10 @@ namespace ropras::ompl_ext
             AttachedBody body;
             body.name = id;
             body.link = link;
-            if (const YAML::Node p = object["pose"]; p.IsDefined() && !p.IsNull())
+            if (const YamlNode p = object["pose"]; p.isDefined() && !p.isNull())
                 body.pose = reader.pose(p, at + ".object.pose");
             body.shapes = readShapes(reader, object, at + ".object");
-            if (const YAML::Node touch = node["touch_links"]; touch.IsDefined() && !touch.IsNull())
+            if (const YamlNode touch = node["touch_links"]; touch.isDefined() && !touch.isNull())
             {
                 reader.sequence(touch, at + ".touch_links");
                 for (std::size_t k = 0; k < touch.size(); ++k)
@@ -380,16 +318,16 @@ namespace ropras::ompl_ext
             }
         }
 
-        void readAttachedObjects(const Reader &reader, const YAML::Node &root, std::set<std::string> &ids,
+        void readAttachedObjects(const Reader &reader, const YamlNode &root, std::set<std::string> &ids,
                                  const std::shared_ptr<const RobotModel> &robot, Environment &env)
         {
-            const YAML::Node state = root["robot_state"];
-            if (!state.IsDefined() || state.IsNull())
+            const YamlNode state = root["robot_state"];
+            if (!state.isDefined() || state.isNull())
                 return;
-            if (!state.IsMap())
+            if (!state.isMap())
                 reader.fail(state, "robot_state", "expected a mapping");
-            const YAML::Node attached = state["attached_collision_objects"];
-            if (!attached.IsDefined() || attached.IsNull())
+            const YamlNode attached = state["attached_collision_objects"];
+            if (!attached.isDefined() || attached.isNull())
                 return;
             reader.sequence(attached, "robot_state.attached_collision_objects");
             for (std::size_t i = 0; i < attached.size(); ++i)
@@ -398,45 +336,52 @@ namespace ropras::ompl_ext
                                    env);
         }
 
-        Environment readScene(const Reader &reader, const YAML::Node &root,
+        /** \brief The scene of \a yaml: each object of world.collision_objects is read (and added to the
+            environment) as soon as the parser has passed it, then dropped from the tree; the rest of the document is
+            checked when it has been read. */
+        Environment readScene(const Reader &reader, const std::string &yaml,
                               const std::shared_ptr<const RobotModel> &robot)
         {
-            if (!root.IsMap())
-                reader.fail(root, "document", "expected a MoveIt PlanningScene (a mapping with 'world')");
-            const YAML::Node world = root["world"];
-            if (!world.IsDefined())
-                reader.fail(root, "document", "no 'world' key: not a MoveIt PlanningScene");
             Environment env;
             std::set<std::string> ids;
-            if (!world.IsNull())
+            const auto readObject = [&](const YamlNode &object, std::size_t i)
+            { readCollisionObject(reader, object, "world.collision_objects[" + std::to_string(i) + "]", ids, env); };
+            const YamlTree tree(yaml, reader.source(), {"world", "collision_objects"}, readObject);
+            const YamlNode root = tree.root();
+            if (!root.isMap())
+                reader.fail(root, "document", "expected a MoveIt PlanningScene (a mapping with 'world')");
+            const YamlNode world = root["world"];
+            if (!world.isDefined())
+                reader.fail(root, "document", "no 'world' key: not a MoveIt PlanningScene");
+            if (!world.isNull())
             {
-                if (!world.IsMap())
+                if (!world.isMap())
                     reader.fail(world, "world", "expected a mapping with 'collision_objects'");
-                const YAML::Node objects = world["collision_objects"];
-                if (objects.IsDefined() && !objects.IsNull())
+                const YamlNode objects = world["collision_objects"];
+                if (objects.isDefined() && !objects.isNull())
                 {
                     reader.sequence(objects, "world.collision_objects");
                     for (std::size_t i = 0; i < objects.size(); ++i)
-                        readCollisionObject(reader, objects[i], "world.collision_objects[" + std::to_string(i) + "]",
-                                            ids, env);
+                        if (!objects[i].isReleased())  // every item is read while parsing; kept for safety
+                            readObject(objects[i], i);
                 }
             }
             readAttachedObjects(reader, root, ids, robot, env);
             return env;
         }
 
-        MotionPlanRequest readRequest(const Reader &reader, const YAML::Node &root)
+        MotionPlanRequest readRequest(const Reader &reader, const YamlNode &root)
         {
-            if (!root.IsMap())
+            if (!root.isMap())
                 reader.fail(root, "document", "expected a MoveIt MotionPlanRequest (a mapping)");
             MotionPlanRequest request;
 
-            const YAML::Node startState = reader.child(root, "start_state", "document");
-            const YAML::Node jointState = reader.child(startState, "joint_state", "start_state");
-            const YAML::Node names = reader.sequence(reader.child(jointState, "name", "start_state.joint_state"),
-                                                     "start_state.joint_state.name");
-            const YAML::Node positions = reader.sequence(
-                reader.child(jointState, "position", "start_state.joint_state"), "start_state.joint_state.position");
+            const YamlNode startState = reader.child(root, "start_state", "document");
+            const YamlNode jointState = reader.child(startState, "joint_state", "start_state");
+            const YamlNode names = reader.sequence(reader.child(jointState, "name", "start_state.joint_state"),
+                                                   "start_state.joint_state.name");
+            const YamlNode positions = reader.sequence(reader.child(jointState, "position", "start_state.joint_state"),
+                                                       "start_state.joint_state.position");
             if (names.size() != positions.size())
                 reader.fail(positions, "start_state.joint_state",
                             std::to_string(names.size()) + " joint names but " + std::to_string(positions.size()) +
@@ -451,13 +396,12 @@ namespace ropras::ompl_ext
                     reader.fail(names[i], where, "duplicate joint name '" + name + "'");
             }
 
-            const YAML::Node goals =
+            const YamlNode goals =
                 reader.sequence(reader.child(root, "goal_constraints", "document"), "goal_constraints");
             if (goals.size() == 0)
                 reader.fail(goals, "goal_constraints", "no goal constraints");
-            const YAML::Node joints =
-                reader.sequence(reader.child(goals[0], "joint_constraints", "goal_constraints[0]"),
-                                "goal_constraints[0].joint_constraints");
+            const YamlNode joints = reader.sequence(reader.child(goals[0], "joint_constraints", "goal_constraints[0]"),
+                                                    "goal_constraints[0].joint_constraints");
             if (joints.size() == 0)
                 reader.fail(joints, "goal_constraints[0].joint_constraints", "no joint constraints");
             for (std::size_t i = 0; i < joints.size(); ++i)
@@ -477,8 +421,7 @@ namespace ropras::ompl_ext
     Environment planningSceneFromString(const std::string &yaml, const std::string &sourceName,
                                         std::shared_ptr<const RobotModel> robot)
     {
-        const Reader reader(sourceName);
-        return readScene(reader, reader.parse(yaml), robot);
+        return readScene(Reader(sourceName), yaml, robot);
     }
 
     Environment planningSceneFromString(const std::string &yaml, const std::string &sourceName)
@@ -499,7 +442,8 @@ namespace ropras::ompl_ext
     MotionPlanRequest motionPlanRequestFromString(const std::string &yaml, const std::string &sourceName)
     {
         const Reader reader(sourceName);
-        return readRequest(reader, reader.parse(yaml));
+        const YamlTree tree(yaml, sourceName);
+        return readRequest(reader, tree.root());
     }
 
     MotionPlanRequest loadMotionPlanRequest(const std::string &path)
