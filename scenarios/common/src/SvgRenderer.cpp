@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "RecordingReader.h"
 #include "ropras/core/Error.h"
 #include "ropras/core/InputFile.h"
 
@@ -14,155 +15,9 @@ namespace ropras::scenarios
 {
     namespace
     {
-        using Vec = std::array<double, 3>;
-
-        /** \brief A scene element: a box, a disc or a point (x, y, z; z = 0 in 2-D). */
-        struct Shape
-        {
-            enum class Kind
-            {
-                BOX,
-                DISC,
-                POINT
-            } kind{Kind::POINT};
-            Vec lo{}, hi{};
-            double radius{0.0};
-        };
-
-        /** \brief Reads and checks the parts of a recording, naming \a source and the key in every error. */
-        class Reader
-        {
-        public:
-            explicit Reader(std::string source) : source_(std::move(source)) {}
-
-            [[noreturn]] void fail(const std::string &key, const std::string &problem) const
-            {
-                throw Error(source_ + ": " + key + " " + problem);
-            }
-
-            /** \brief A coordinate list of 2 or 3 finite numbers (at least \a minDims). */
-            Vec point(const nlohmann::json &j, const std::string &key, std::size_t minDims = 2) const
-            {
-                if (!j.is_array() || j.size() < minDims || j.size() > 3)
-                {
-                    fail(key, "must be a point [x, y] or [x, y, z], not " + clip(j));
-                }
-                Vec out{0.0, 0.0, 0.0};
-                for (std::size_t k = 0; k < j.size(); ++k)
-                {
-                    if (!j[k].is_number() || !std::isfinite(j[k].get<double>()))
-                    {
-                        fail(key, "has a coordinate that is not a finite number: " + clip(j));
-                    }
-                    out[k] = j[k].get<double>();
-                }
-                return out;
-            }
-
-            static bool isPoint(const nlohmann::json &j)
-            {
-                return j.is_array() && (j.size() == 2 || j.size() == 3) &&
-                       std::all_of(j.begin(), j.end(), [](const nlohmann::json &v) { return v.is_number(); });
-            }
-
-            Shape box(const Vec &lo, const Vec &hi, const std::string &key) const
-            {
-                for (int k = 0; k < 3; ++k)
-                {
-                    if (lo[k] > hi[k])
-                    {
-                        fail(key, "is a box whose lower corner exceeds its upper corner on axis " + std::to_string(k));
-                    }
-                }
-                Shape s;
-                s.kind = Shape::Kind::BOX;
-                s.lo = lo;
-                s.hi = hi;
-                return s;
-            }
-
-            Shape shape(const nlohmann::json &j, const std::string &key) const
-            {
-                if (isPoint(j))
-                {
-                    Shape s;
-                    s.lo = s.hi = point(j, key);
-                    return s;
-                }
-                if (j.is_array() && j.size() == 2 && isPoint(j[0]) && isPoint(j[1]))
-                {
-                    return box(point(j[0], key), point(j[1], key), key);
-                }
-                if (j.is_object())
-                {
-                    for (const auto &names : {std::pair<const char *, const char *>{"lo", "hi"}, {"min", "max"}})
-                    {
-                        if (j.contains(names.first) && j.contains(names.second))
-                        {
-                            return box(point(j[names.first], key + "." + names.first),
-                                       point(j[names.second], key + "." + names.second), key);
-                        }
-                    }
-                    const char *centerKey = j.contains("center") ? "center" : j.contains("centre") ? "centre" : nullptr;
-                    if (centerKey && j.contains("radius"))
-                    {
-                        Shape s;
-                        s.kind = Shape::Kind::DISC;
-                        s.lo = s.hi = point(j[centerKey], key + "." + centerKey);
-                        s.radius = number(j["radius"], key + ".radius");
-                        if (s.radius < 0.0)
-                        {
-                            fail(key + ".radius", "is negative");
-                        }
-                        return s;
-                    }
-                    if (centerKey && j.contains("half_extents"))
-                    {
-                        const Vec c = point(j[centerKey], key + "." + centerKey);
-                        const Vec h = point(j["half_extents"], key + ".half_extents");
-                        return box(Vec{c[0] - h[0], c[1] - h[1], c[2] - h[2]},
-                                   Vec{c[0] + h[0], c[1] + h[1], c[2] + h[2]}, key);
-                    }
-                }
-                fail(key, "is not a box [lo, hi], {\"center\", \"radius\"} or a point [x, y(, z)]: " + clip(j));
-            }
-
-            std::vector<Shape> shapes(const nlohmann::json &j, const std::string &key) const
-            {
-                std::vector<Shape> out;
-                if (j.is_null())
-                {
-                    return out;
-                }
-                if (!j.is_array())
-                {
-                    fail(key, "must be an array of shapes, not " + clip(j));
-                }
-                for (std::size_t i = 0; i < j.size(); ++i)
-                {
-                    out.push_back(shape(j[i], key + "[" + std::to_string(i) + "]"));
-                }
-                return out;
-            }
-
-            double number(const nlohmann::json &j, const std::string &key) const
-            {
-                if (!j.is_number() || !std::isfinite(j.get<double>()))
-                {
-                    fail(key, "must be a finite number, not " + clip(j));
-                }
-                return j.get<double>();
-            }
-
-            static std::string clip(const nlohmann::json &j)
-            {
-                std::string s = j.dump();
-                return s.size() > 80 ? s.substr(0, 77) + "..." : s;
-            }
-
-        private:
-            std::string source_;
-        };
+        using detail::Reader;
+        using detail::Shape;
+        using detail::Vec;
 
         std::string escape(const std::string &text)
         {
@@ -209,26 +64,6 @@ namespace ropras::scenarios
             double width() const { return (hi[0] - lo[0]) * scale; }
             double height() const { return (hi[1] - lo[1]) * scale; }
         };
-
-        const std::map<std::string, std::string> &layerColours()
-        {
-            static const std::map<std::string, std::string> colours{
-                {"walls", "#808080"},        {"obstacles", "#00bcd4"},
-                {"danger_zones", "#e53935"}, {"observation_zones", "#8e44ad"},
-                {"landmarks", "#8e44ad"},    {"light", "#8e44ad"},
-                {"goal", "#2e7d32"},         {"starts", "#fb8c00"}};
-            return colours;
-        }
-
-        std::string labelColour(const std::string &label, std::size_t index)
-        {
-            if (label == "target")
-                return "#2e7d32";
-            if (label == "robot")
-                return "#1a4fa0";
-            static const char *palette[] = {"#1a4fa0", "#c2185b", "#6d4c41", "#00897b", "#5e35b1", "#f4511e"};
-            return palette[index % (sizeof(palette) / sizeof(palette[0]))];
-        }
 
         void drawShape(std::ostringstream &svg, const Frame &f, const Shape &s, const std::string &colour,
                        double opacity, bool is3d, double zLo, double zHi, double markerRadius)
@@ -514,7 +349,7 @@ namespace ropras::scenarios
             {
                 continue;
             }
-            const std::string &colour = layerColours().at(layer.first);
+            const std::string &colour = detail::layerColour(layer.first, 0);
             svg << "<g id=\"" << layer.first << "\">\n";
             for (const auto &s : shapes)
             {
@@ -541,10 +376,10 @@ namespace ropras::scenarios
             svg << "<g id=\"goal\">\n";
             for (const auto &s : goals)
             {
-                drawShape(svg, f, s, layerColours().at("goal"), 0.45, false, 0.0, 0.0, markerRadius + 2.0);
+                drawShape(svg, f, s, detail::layerColour("goal", 0), 0.45, false, 0.0, 0.0, markerRadius + 2.0);
             }
             svg << "</g>\n";
-            legend.emplace_back("goal", layerColours().at("goal"));
+            legend.emplace_back("goal", detail::layerColour("goal", 0));
         }
         if (scene.contains("starts"))
         {
@@ -552,10 +387,10 @@ namespace ropras::scenarios
             svg << "<g id=\"starts\">\n";
             for (const auto &s : starts)
             {
-                drawShape(svg, f, s, layerColours().at("starts"), 0.6, false, 0.0, 0.0, markerRadius);
+                drawShape(svg, f, s, detail::layerColour("starts", 0), 0.6, false, 0.0, 0.0, markerRadius);
             }
             svg << "</g>\n";
-            legend.emplace_back("starts", layerColours().at("starts"));
+            legend.emplace_back("starts", detail::layerColour("starts", 0));
         }
 
         // belief particles and the true position at those steps
@@ -604,7 +439,7 @@ namespace ropras::scenarios
             {
                 continue;
             }
-            const std::string colour = labelColour(labels[k], k);
+            const std::string colour = detail::labelColour(labels[k], k);
             // a jump longer than a fifth of the map (the target teleporting across the boundary) starts a new
             // piece instead of a line across the map
             const double jump = 0.2 * std::max(f.hi[0] - f.lo[0], f.hi[1] - f.lo[1]);
@@ -654,7 +489,7 @@ namespace ropras::scenarios
                 }
                 const Vec &end = paths[k].back();
                 svg << "<circle cx=\"" << num(f.x(end[0])) << "\" cy=\"" << num(f.y(end[1])) << "\" r=\""
-                    << num(radius * f.scale) << "\" fill=\"none\" stroke=\"" << labelColour(labels[k], k)
+                    << num(radius * f.scale) << "\" fill=\"none\" stroke=\"" << detail::labelColour(labels[k], k)
                     << "\" stroke-dasharray=\"" << dash << "\" stroke-width=\"1\"/>\n";
             }
             svg << "</g>\n";
