@@ -121,7 +121,7 @@ namespace ropras::scenarios
             std::vector<double> radii;
             std::size_t attached = 0;
             const auto centres = detail::robotSphereFrames(*model, nullptr, qs, radii, attached);
-            view.body("robot", "#5c6bc0", radii, centres);
+            view.body("robot spheres", "#5c6bc0", radii, centres);
         }
 
         void drawRays(detail::ViewDocument &view, const nlohmann::json &rays, const Reader &r)
@@ -136,8 +136,8 @@ namespace ropras::scenarios
             {
                 const std::string key = "rays[" + std::to_string(i) + "]";
                 const auto &item = rays[i];
-                if (!item.is_object() || !item.contains("step") || !item["step"].is_number_unsigned() ||
-                    !item.contains("segments") || !item["segments"].is_array())
+                if (!item.is_object() || !item.contains("step") || !item["step"].is_number_integer() ||
+                    item["step"].get<std::int64_t>() < 0 || !item.contains("segments") || !item["segments"].is_array())
                 {
                     r.fail(key, "must be {\"step\": n, \"segments\": [[origin, end], ...]}, not " + Reader::clip(item));
                 }

@@ -219,7 +219,8 @@ namespace ropras::scenarios
             robotCentres.insert(robotCentres.end(), frame, frame + robotSpheres * 3);
             attachedCentres.insert(attachedCentres.end(), frame + robotSpheres * 3, frame + radii.size() * 3);
         }
-        view.body("robot", "#5c6bc0", std::vector<double>(radii.begin(), radii.begin() + robotSpheres), robotCentres);
+        view.body("robot spheres", "#5c6bc0", std::vector<double>(radii.begin(), radii.begin() + robotSpheres),
+                  robotCentres);
         if (attached > 0)
         {
             view.body("attached objects", "#ef6c00", std::vector<double>(radii.begin() + robotSpheres, radii.end()),
