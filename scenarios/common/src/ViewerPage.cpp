@@ -1,5 +1,7 @@
 #include "ropras/scenarios/ViewerPage.h"
 
+#include "SvgPicture.h"
+
 #include "ropras/core/Error.h"
 #include "ropras/core/InputFile.h"
 #include "ropras/scenarios/ScenarioRegistry.h"
@@ -40,29 +42,6 @@ namespace ropras::scenarios
             return out;
         }
 
-        std::string htmlEscape(const std::string &text)
-        {
-            std::string out;
-            for (const char c : text)
-            {
-                switch (c)
-                {
-                    case '&':
-                        out += "&amp;";
-                        break;
-                    case '<':
-                        out += "&lt;";
-                        break;
-                    case '>':
-                        out += "&gt;";
-                        break;
-                    default:
-                        out += c;
-                }
-            }
-            return out;
-        }
-
         void replaceOnce(std::string &page, const std::string &key, const std::string &value)
         {
             const auto at = page.find(key);
@@ -88,7 +67,7 @@ namespace ropras::scenarios
         const std::string title = view.contains("title") && view["title"].is_string() ? view["title"].get<std::string>()
                                                                                       : std::string("ropras view");
         // the script parts go in last, so that no placeholder text inside them is ever replaced
-        replaceOnce(page, "@ROPRAS_TITLE@", htmlEscape(title));
+        replaceOnce(page, "@ROPRAS_TITLE@", detail::xmlEscape(title));
         replaceOnce(page, "@ROPRAS_DATA@",
                     scriptSafe(view.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)));
         replaceOnce(page, "/*@ROPRAS_VIEWER@*/", scriptSafe(embeddedFile("common/viewer/viewer.js")));
