@@ -33,6 +33,12 @@ namespace
         return slash == std::string::npos ? std::string(".") : file.substr(0, slash);
     }
 
+    std::string baseName(const std::string &file)
+    {
+        const auto slash = file.rfind('/');
+        return slash == std::string::npos ? file : file.substr(slash + 1);
+    }
+
     /** \brief "dir/name.json" -> "dir/name.html". */
     std::string defaultOut(const std::string &input)
     {
@@ -49,9 +55,9 @@ namespace
         const Environment environment = o.scene.empty() ? Environment() : loadPlanningScene(o.scene, robot);
         const auto path = ropras::scenarios::loadJointPathCsv(o.path, *robot);
         ropras::scenarios::MotionViewOptions options;
-        options.title = robot->name() + ": " + o.path;
+        options.title = robot->name() + ": " + baseName(o.path);
         options.subtitle = std::to_string(path.size()) + " waypoints" +
-                           (o.scene.empty() ? std::string(", no scene") : ", scene " + o.scene);
+                           (o.scene.empty() ? std::string(", no scene") : ", scene " + baseName(o.scene));
         options.maxJointStep = o.step;
         options.tipLink = o.tip;
         return ropras::scenarios::motionView(*robot, environment, path, options);
