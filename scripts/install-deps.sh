@@ -9,6 +9,8 @@ packages=(
   libgtest-dev libbenchmark-dev
   liborocos-kdl-dev libkdl-parser-dev  # only for `ropras bench-ik` and the tests (the KDL comparison)
   ompl-demos  # /usr/bin/ompl_benchmark_statistics: bench-mbm --ompl-log into Planner Arena's database (a test)
+  libjs-three  # three.js, embedded into the pages of `ropras view` (read at run time from /usr/share/javascript/three)
+  chromium python3  # the browser tests of `ropras view` (test/browser: headless chromium, a PNG check in python3)
 )
 missing=()
 for p in "${packages[@]}"; do

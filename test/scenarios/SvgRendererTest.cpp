@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdio>
 
 #include <filesystem>
 #include <fstream>
@@ -143,13 +145,17 @@ namespace ropras::scenarios::test
                                 [](const tinyxml2::XMLElement *e)
                                 { return std::string(e->Attribute("stroke")) == "#2e7d32"; }),
                   1u);
-        // beliefs: 2 steps x 3 particles x 3 points, yellow and translucent
+        // beliefs: 2 steps x 3 particles x 3 points, each snapshot in the colour of its time
         const auto *beliefs = findById(root, "beliefs");
         ASSERT_NE(beliefs, nullptr);
-        EXPECT_EQ(
-            countElements(beliefs->FirstChildElement(), "circle",
-                          [](const tinyxml2::XMLElement *e) { return std::string(e->Attribute("fill")) == "#fdd835"; }),
-            18u);
+        EXPECT_EQ(countElements(beliefs->FirstChildElement(), "circle",
+                                [](const tinyxml2::XMLElement *e)
+                                { return e->Attribute("class") && std::string(e->Attribute("class")) == "particle"; }),
+                  18u);
+        const auto *first = beliefs->FirstChildElement("g");
+        ASSERT_NE(first, nullptr);
+        ASSERT_NE(first->NextSiblingElement("g"), nullptr);
+        EXPECT_STRNE(first->Attribute("fill"), first->NextSiblingElement("g")->Attribute("fill"));
         // detection range around both drones, capture radius around the target
         EXPECT_EQ(countIn(findById(root, "detection_range"), "circle"), 2u);
         EXPECT_EQ(countIn(findById(root, "capture_radius"), "circle"), 1u);
@@ -267,6 +273,116 @@ namespace ropras::scenarios::test
         r["scenario"] = "a<b&\"c\"";
         tinyxml2::XMLDocument doc;
         EXPECT_TRUE(parse(renderSvg(r), doc));
+    }
+
+    namespace
+    {
+        std::vector<const tinyxml2::XMLElement *> elementsOfClass(const tinyxml2::XMLElement *e, const std::string &cls)
+        {
+            std::vector<const tinyxml2::XMLElement *> out;
+            for (; e; e = e->NextSiblingElement())
+            {
+                if (e->Attribute("class") && cls == e->Attribute("class"))
+                    out.push_back(e);
+                const auto inner = elementsOfClass(e->FirstChildElement(), cls);
+                out.insert(out.end(), inner.begin(), inner.end());
+            }
+            return out;
+        }
+    }  // namespace
+
+    // Axes carry metric ticks (1, 2 or 5 x 10^k m), 3-D problems get a side view (x, z) below the top view, the
+    // paths carry arrowheads pointing the way they go, and the belief time ramp is labelled with its steps.
+    TEST(SvgRenderer, AxesSideViewArrowsAndTimeLegend)
+    {
+        const std::string svg = renderSvg(droneRecording());
+        tinyxml2::XMLDocument doc;
+        ASSERT_TRUE(parse(svg, doc));
+        const auto *root = doc.RootElement();
+        // bounds 30 m wide: ticks every 5 m, -15 ... 15 along x in both views
+        std::vector<std::string> numbers;
+        for (const auto *axes : elementsOfClass(root->FirstChildElement(), "axes"))
+        {
+            for (const auto *t = axes->FirstChildElement("text"); t; t = t->NextSiblingElement("text"))
+                if (!t->Attribute("class"))
+                    numbers.push_back(t->GetText());
+        }
+        EXPECT_EQ(std::count(numbers.begin(), numbers.end(), "-15"), 3) << "x twice (top and side), y once";
+        EXPECT_EQ(std::count(numbers.begin(), numbers.end(), "5"), 3);
+        EXPECT_EQ(std::count(numbers.begin(), numbers.end(), "2"), 1) << "z from -2 to 2: ticks every 0.5 m";
+        EXPECT_NE(svg.find(">x (m)<"), std::string::npos);
+        EXPECT_NE(svg.find(">z (m)<"), std::string::npos);
+        const auto *side = findById(root, "side_view");
+        ASSERT_NE(side, nullptr) << "a 3-D problem has a side view";
+        const auto sideObstacles = elementsOfClass(side->FirstChildElement(), "obstacles");
+        ASSERT_EQ(sideObstacles.size(), 1u);
+        EXPECT_EQ(countIn(sideObstacles[0], "rect"), 2u);
+        // the side view's obstacle at z in [1, 2] sits above (smaller y) the one at z in [-2, -1]
+        const auto *a = sideObstacles[0]->FirstChildElement("rect");
+        EXPECT_GT(a->DoubleAttribute("y"), a->NextSiblingElement("rect")->DoubleAttribute("y"));
+        // drone1 flies +x: every arrowhead's tip (its first point) lies right of its base
+        const auto *trajectory = findById(root, "trajectory");
+        ASSERT_NE(trajectory, nullptr);
+        const auto arrows = elementsOfClass(trajectory->FirstChildElement(), "arrow");
+        ASSERT_GE(arrows.size(), 3u * 8u);
+        for (std::size_t i = 0; i < 8; ++i)
+        {
+            double x0, y0, x1, y1, x2, y2;
+            ASSERT_EQ(
+                std::sscanf(arrows[i]->Attribute("points"), "%lf,%lf %lf,%lf %lf,%lf", &x0, &y0, &x1, &y1, &x2, &y2),
+                6);
+            EXPECT_GT(x0, 0.5 * (x1 + x2));
+        }
+        const auto *ramp = findById(root, "time_legend");
+        ASSERT_NE(ramp, nullptr);
+        EXPECT_STREQ(elementsOfClass(ramp->FirstChildElement(), "time-last")[0]->GetText(), "2");
+        // a 2-D recording has no side view
+        json flat = droneRecording();
+        flat["scene"]["dims"] = 2;
+        flat["scene"]["bounds"] = box({-15, -15}, {15, 15});
+        EXPECT_EQ(renderSvg(flat).find("side_view"), std::string::npos);
+    }
+
+    // Time labels of many snapshots at one place never overprint each other nor leave the map; the legend wraps
+    // inside the picture.
+    TEST(SvgRenderer, LabelsNeitherOverprintNorClip)
+    {
+        json r = droneRecording();
+        r["labels"] = {"robot"};
+        r["trajectory"] = json::array();
+        r["beliefs"] = json::array();
+        for (int t = 0; t < 30; ++t)
+        {
+            r["trajectory"].push_back({{14.8, 14.8, 0.0}});  // in the corner: labels must not leave the map
+            r["beliefs"].push_back({{"step", t}, {"particles", {{{14.8, 14.8, 0.0}}}}});
+        }
+        r["scene"]["extra_layer_with_a_rather_long_name"] = json::array();
+        const std::string svg = renderSvg(r);
+        tinyxml2::XMLDocument doc;
+        ASSERT_TRUE(parse(svg, doc));
+        const auto *root = doc.RootElement();
+        const auto *bounds = findById(root, "bounds");
+        const double left = bounds->DoubleAttribute("x"), top = bounds->DoubleAttribute("y");
+        const double right = left + bounds->DoubleAttribute("width"), bottom = top + bounds->DoubleAttribute("height");
+        const auto labels = elementsOfClass(root->FirstChildElement(), "time-label");
+        ASSERT_GE(labels.size(), 1u);
+        EXPECT_LT(labels.size(), 30u) << "labels that find no free spot are left out";
+        std::vector<std::array<double, 4>> boxes;
+        for (const auto *l : labels)
+        {
+            const double x = l->DoubleAttribute("x"), y = l->DoubleAttribute("y");
+            const double w = 6.0 * std::string(l->GetText()).size();
+            EXPECT_GE(x, left);
+            EXPECT_LE(x + w, right);
+            EXPECT_GE(y - 10.0, top);
+            EXPECT_LE(y, bottom);
+            for (const auto &b : boxes)
+                EXPECT_FALSE(x < b[2] && b[0] < x + w && y - 10.0 < b[3] && b[1] < y) << l->GetText();
+            boxes.push_back({x, y - 10.0, x + w, y});
+        }
+        const double width = root->DoubleAttribute("width");
+        for (const auto *t = findById(root, "legend")->FirstChildElement("text"); t; t = t->NextSiblingElement("text"))
+            EXPECT_LE(t->DoubleAttribute("x") + 7.0 * std::string(t->GetText()).size(), width) << t->GetText();
     }
 
     TEST(SvgRenderer, LoadRecordingNamesTheFile)

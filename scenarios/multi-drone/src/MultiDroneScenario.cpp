@@ -97,6 +97,14 @@ namespace ropras::scenarios
             out.push_back(Point3{s.target[0], s.target[1], s.target[2]});
         };
         parts.pointLabels = {"drone1", "drone2", "drone3", "drone4", "target"};
+        parts.robotUrdf = "multi-drone/drones.urdf";  // joints drone1_x, drone1_y, drone1_z, drone2_x, ...
+        parts.configuration = [](const MultiDroneModel::State &s, std::vector<double> &q)
+        {
+            for (std::size_t d = 0; d < MULTI_DRONE_COUNT; ++d)
+            {
+                q.insert(q.end(), s.drone[d], s.drone[d] + 3);
+            }
+        };
 
         nlohmann::json starts = nlohmann::json::array();
         for (const auto &p : config.starts)

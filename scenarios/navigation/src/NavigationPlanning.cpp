@@ -253,6 +253,9 @@ namespace ropras::scenarios
         { return std::make_unique<NavigationWorld>(model); };
         parts.points = [](const NavState &s, std::vector<Point3> &out) { out.push_back({{s.p[0], s.p[1], s.p[2]}}); };
         parts.pointLabels = {"robot"};
+        parts.robotUrdf = folder + "/robot.urdf";
+        parts.configuration = [dims = config.dims](const NavState &s, std::vector<double> &q)
+        { q.insert(q.end(), s.p, s.p + dims); };
         parts.defaults = config.defaults;
         parts.horizon = config.horizon;
         parts.defaultPlanSeconds = config.planSeconds;

@@ -49,6 +49,11 @@ namespace ropras::scenarios
         std::function<void(const State &, std::vector<Point3> &)> points;
         /// names of those positions, e.g. {"robot"} or {"drone1", ..., "target"}
         std::vector<std::string> pointLabels;
+        /// the robot's URDF as an embedded file (e.g. "navigation/maze2d/robot.urdf"); with `configuration`,
+        /// recordings carry the robot's joint values per step (key "robot"), which `ropras view` poses by FK
+        std::string robotUrdf;
+        /// the robot's planning-joint values (in the URDF's planning order) in a state; empty = not recorded
+        std::function<void(const State &, std::vector<double> &)> configuration;
         /// solver and filter parameter defaults of this scenario (the user's --param values override them)
         std::map<std::string, double> defaults;
         std::size_t horizon{100};
@@ -107,7 +112,7 @@ namespace ropras::scenarios
         return s;
     }
 
-    /** \brief Records an episode as JSON for `ropras render`. */
+    /** \brief Records an episode as JSON for `ropras render` and `ropras view` (format: doc/scenarios.md). */
     template <class M>
     class EpisodeRecorder final : public pomdp::EpisodeObserver<M>
     {
@@ -124,11 +129,16 @@ namespace ropras::scenarios
             out_["rewards"] = nlohmann::json::array();
             out_["plans"] = nlohmann::json::array();
             out_["beliefs"] = nlohmann::json::array();
+            if (parts_.configuration && !parts_.robotUrdf.empty())
+            {
+                out_["robot"] = {{"urdf", "embedded:" + parts_.robotUrdf}, {"configurations", nlohmann::json::array()}};
+            }
         }
 
         void onStart(const State &trueState, const std::vector<State> &particles) override
         {
             out_["trajectory"].push_back(pointsOf(trueState));
+            addConfiguration(trueState);
             addBelief(0, particles);
         }
         void onPlan(std::size_t step, const std::vector<Action> &macro, const pomdp::SearchStatistics &s) override
@@ -139,6 +149,7 @@ namespace ropras::scenarios
                     const std::vector<State> &particles) override
         {
             out_["trajectory"].push_back(pointsOf(result.next));
+            addConfiguration(result.next);
             out_["rewards"].push_back(result.reward);
             last_ = particles;
             lastStep_ = step;
@@ -163,6 +174,15 @@ namespace ropras::scenarios
             parts_.points(s, scratch_);
             return scratch_;
         }
+        void addConfiguration(const State &s)
+        {
+            if (out_.contains("robot"))
+            {
+                joints_.clear();
+                parts_.configuration(s, joints_);
+                out_["robot"]["configurations"].push_back(joints_);
+            }
+        }
         void addBelief(std::size_t step, const std::vector<State> &particles)
         {
             nlohmann::json list = nlohmann::json::array();
@@ -179,6 +199,7 @@ namespace ropras::scenarios
         RecordSettings settings_;
         nlohmann::json &out_;
         std::vector<Point3> scratch_;
+        std::vector<double> joints_;
         std::vector<State> last_;
         std::size_t lastStep_{0};
     };
