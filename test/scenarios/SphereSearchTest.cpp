@@ -298,6 +298,7 @@ namespace ropras::scenarios
         expectError({{"planning", {{"ik_points", 0}}}}, "\"planning.ik_points\"");
         expectError({{"end_effector", "panda_nose"}}, "panda_nose");
         expectError({{"transition_sigma", -0.02}}, "\"transition_sigma\"");
+        expectError({{"action_mode", "teleport"}}, "\"action_mode\"");
         expectError({{"color", 1}}, "color");  // unknown key
     }
 }  // namespace ropras::scenarios

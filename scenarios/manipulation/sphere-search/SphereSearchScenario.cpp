@@ -89,7 +89,8 @@ namespace ropras::scenarios
             ik.radiusFraction = config.ikRadiusFraction;
             auto sampler = std::make_unique<ArmGoalSampler>(arm, planningEnv, ik, seed ^ 0x5bd1e995ULL);
             const std::size_t macroLength = params.getCount("macro_length", 10);
-            auto adapter = std::make_shared<const ArmPlanningAdapter>(std::move(sampler), config.step, macroLength);
+            auto adapter = std::make_shared<const ArmPlanningAdapter>(std::move(sampler), config.step, macroLength,
+                                                                      config.waypointActions);
             return std::make_unique<pomdp::OmplReferencePolicy<SphereSearchModel, ArmTarget>>(
                 adapter, std::move(heuristic), arm->robot(), planningEnv, planner);
         };

@@ -136,8 +136,8 @@ namespace ropras::scenarios
     }
 
     ArmPlanningAdapter::ArmPlanningAdapter(std::unique_ptr<ArmGoalSampler> sampler, double step,
-                                           std::size_t macroLength)
-        : sampler_(std::move(sampler)), step_(step), macroLength_(macroLength)
+                                           std::size_t macroLength, bool waypoints)
+        : sampler_(std::move(sampler)), step_(step), macroLength_(macroLength), waypoints_(waypoints)
     {
         if (!sampler_)
         {
@@ -181,8 +181,9 @@ namespace ropras::scenarios
             ArmAction a;
             for (std::size_t j = 0; j < ARM_DOF; ++j)
             {
-                a.dq[j] = point[j] - previous[j];
+                a.dq[j] = waypoints_ ? point[j] : point[j] - previous[j];
             }
+            a.waypoint = waypoints_;
             out.push_back(a);
             previous = point;
         }

@@ -39,6 +39,7 @@ namespace ropras::scenarios
                         "light_radius",
                         "obstacles",
                         "step",
+                        "action_mode",
                         "transition_sigma",
                         "observation_sigma",
                         "initial_sigma",
@@ -83,6 +84,12 @@ namespace ropras::scenarios
             c.obstacles.push_back({{row[0], row[1], row[2], row[3]}});
         }
         c.step = r.positive("step");
+        const auto &mode = r.at("action_mode");
+        if (mode != "delta" && mode != "waypoint")
+        {
+            r.fail("action_mode", "must be \"delta\" or \"waypoint\", not " + mode.dump());
+        }
+        c.waypointActions = mode == "waypoint";
         c.transitionSigma = r.nonNegative("transition_sigma");
         c.observationSigma = r.positive("observation_sigma");
         c.initialSigma = r.nonNegative("initial_sigma");

@@ -108,12 +108,14 @@ namespace ropras::scenarios
         Point target's configuration comes from an ArmGoalSampler (IK in the planner's environment); a
         planned path becomes PathToMacroAction "motion path up to a predefined length": the path cut into
         steps of L2 norm <= \a step (discretizeJointPath), the first \a macroLength of them, as joint
-        displacements dq. The sampler is mutable: one adapter per reference policy (one thread). */
+        displacements dq (\a waypoints: as the points themselves, ArmAction::waypoint). The sampler is mutable: one
+       adapter per reference policy (one thread). */
     class ArmPlanningAdapter final : public pomdp::OmplPlanningAdapter<SphereSearchModel::State, ArmAction, ArmTarget>
     {
     public:
         /** \brief Throws ropras::Error for a non-positive step or a macroLength of 0. */
-        ArmPlanningAdapter(std::unique_ptr<ArmGoalSampler> sampler, double step, std::size_t macroLength);
+        ArmPlanningAdapter(std::unique_ptr<ArmGoalSampler> sampler, double step, std::size_t macroLength,
+                           bool waypoints = false);
 
         void configuration(const SphereSearchModel::State &state, double *q) const override;
         bool targetConfiguration(const SphereSearchModel::State &start, const ArmTarget &target,
@@ -125,6 +127,7 @@ namespace ropras::scenarios
         std::unique_ptr<ArmGoalSampler> sampler_;
         double step_;
         std::size_t macroLength_;
+        bool waypoints_;
         mutable std::vector<double> points_;
     };
 }  // namespace ropras::scenarios

@@ -15,10 +15,13 @@ namespace ropras::scenarios
     /** \brief Joints of the arm scenarios' robot (the Panda: 7 revolute joints, fingers fixed open). */
     constexpr std::size_t ARM_DOF = 7;
 
-    /** \brief A primitive action of the arm scenarios: a joint displacement dq in R^7 (rad). */
+    /** \brief A primitive action of the arm scenarios: a joint displacement dq in R^7 (rad), or, when
+        \c waypoint is set, the configuration to move to (dq then holds that configuration; the reference
+        policy emits such actions with the configuration key action_mode = "waypoint"). */
     struct ArmAction
     {
         double dq[ARM_DOF]{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+        bool waypoint{false};
     };
 
     /** \brief The project's Panda (robots/panda/panda.urdf + panda.srdf, compiled into the library: no file is

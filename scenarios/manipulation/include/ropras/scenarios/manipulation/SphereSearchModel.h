@@ -30,6 +30,7 @@ namespace ropras::scenarios
         double lightRadius{0.1};                        ///< "light_radius": inside, the goal is observed
         std::vector<std::array<double, 4>> obstacles;   ///< "obstacles": spheres [x, y, z, r]
         double step{0.1};                               ///< "step": L2 norm of a primitive dq (rad)
+        bool waypointActions{false};                    ///< "action_mode": "delta" (false) or "waypoint"
         double transitionSigma{0.02};                   ///< "transition_sigma": N(0, s) per joint and step
         double observationSigma{0.02};                  ///< "observation_sigma": N(0, s) per observed joint
         double initialSigma{0.02};                      ///< "initial_sigma": N(0, s) per joint in b0
@@ -63,7 +64,8 @@ namespace ropras::scenarios
     /** \brief Sphere-Search (the paper's 7-DoF search for one of two goals, revealed by a light) as a POMDP.
 
         State: the joints q and the index of the true goal (0 or 1); the end effector (panda_grasptarget) is
-        FK of q. Action: dq in R^7. Transition: q' = clamp(q + dq + N(0, transition_sigma) per joint); the
+        FK of q. Action: dq in R^7. Transition: q' = clamp(q + dq + N(0, transition_sigma) per joint) (a
+        waypoint action: q' = clamp(w + N(0, transition_sigma))); the
         straight motion q -> q' is checked with the SIMD sphere checker (obstacles and self-collision) at
         \a resolution; a collision ends the episode with fail_reward (collision_terminal) or blocks the step
         at the last valid checked configuration. Then: reward step_reward, + goal_reward and terminal when the
@@ -138,7 +140,7 @@ namespace ropras::scenarios
         {
             for (std::size_t j = 0; j < ARM_DOF; ++j)
             {
-                target[j] = s.q[j] + a.dq[j] + config_.transitionSigma * rng.normal();
+                target[j] = (a.waypoint ? 0.0 : s.q[j]) + a.dq[j] + config_.transitionSigma * rng.normal();
             }
             arm_->clamp(target);
         }
