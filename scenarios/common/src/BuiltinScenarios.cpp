@@ -8,5 +8,6 @@ namespace ropras::scenarios::detail
         addMaze2DScenario(registry);
         addRandom3DScenarios(registry);
         addMultiDroneScenario(registry);
+        addSphereSearchScenario(registry);
     }
 }  // namespace ropras::scenarios::detail

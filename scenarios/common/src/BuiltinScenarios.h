@@ -11,10 +11,11 @@ namespace ropras::scenarios::detail
     void addBuiltinScenarios(ScenarioRegistry &registry);
 
     // One per problem (scenarios/<family>/<problem>/*.cpp or scenarios/<family>/src/).
-    void addLightDarkScenario(ScenarioRegistry &registry);   ///< light-dark
-    void addMaze2DScenario(ScenarioRegistry &registry);      ///< maze2d
-    void addRandom3DScenarios(ScenarioRegistry &registry);   ///< random3d-1 ... random3d-4
-    void addMultiDroneScenario(ScenarioRegistry &registry);  ///< multi-drone
+    void addLightDarkScenario(ScenarioRegistry &registry);     ///< light-dark
+    void addMaze2DScenario(ScenarioRegistry &registry);        ///< maze2d
+    void addRandom3DScenarios(ScenarioRegistry &registry);     ///< random3d-1 ... random3d-4
+    void addMultiDroneScenario(ScenarioRegistry &registry);    ///< multi-drone
+    void addSphereSearchScenario(ScenarioRegistry &registry);  ///< sphere-search
 
     /** \brief Registers a navigation scenario \a name whose configuration is the embedded
         "<folder>/default.json" (e.g. folder "navigation/maze2d") with the user's overrides applied

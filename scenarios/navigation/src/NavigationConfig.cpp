@@ -4,71 +4,17 @@
 #include <sstream>
 
 #include "ropras/core/Error.h"
+#include "ropras/scenarios/ConfigReader.h"
 
 namespace ropras::scenarios
 {
     namespace
     {
-        class Reader
+        /// the common reader plus the navigation shapes (points, boxes)
+        class Reader : public ConfigReader
         {
         public:
-            Reader(const std::string &scenario, const nlohmann::json &json) : scenario_(scenario), json_(json)
-            {
-                if (!json_.is_object())
-                {
-                    fail("", "the configuration must be a JSON object");
-                }
-            }
-
-            [[noreturn]] void fail(const std::string &key, const std::string &problem) const
-            {
-                throw Error("scenario " + scenario_ + ": " + (key.empty() ? "" : "key \"" + key + "\" ") + problem);
-            }
-
-            const nlohmann::json &at(const std::string &key) const
-            {
-                const auto it = json_.find(key);
-                if (it == json_.end())
-                {
-                    fail(key, "is missing");
-                }
-                return *it;
-            }
-
-            double number(const std::string &key, const nlohmann::json &value) const
-            {
-                if (!value.is_number())
-                {
-                    fail(key, "must be a number, not " + value.dump());
-                }
-                const double v = value.get<double>();
-                if (!std::isfinite(v))
-                {
-                    fail(key, "= " + value.dump() + " is not finite");
-                }
-                return v;
-            }
-            double number(const std::string &key) const { return number(key, at(key)); }
-
-            double positive(const std::string &key) const
-            {
-                const double v = number(key);
-                if (!(v > 0.0))
-                {
-                    fail(key, "= " + nlohmann::json(v).dump() + " must be > 0");
-                }
-                return v;
-            }
-
-            double nonNegative(const std::string &key) const
-            {
-                const double v = number(key);
-                if (!(v >= 0.0))
-                {
-                    fail(key, "= " + nlohmann::json(v).dump() + " must be >= 0");
-                }
-                return v;
-            }
+            using ConfigReader::ConfigReader;
 
             std::array<double, 3> point(const std::string &key, const nlohmann::json &value, int dims) const
             {
@@ -122,10 +68,6 @@ namespace ropras::scenarios
                 }
                 return out;
             }
-
-        private:
-            std::string scenario_;
-            const nlohmann::json &json_;
         };
 
         std::string pointString(const std::array<double, 3> &p, int dims)

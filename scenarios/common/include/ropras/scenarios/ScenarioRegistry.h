@@ -47,7 +47,7 @@ namespace ropras::scenarios
         std::map<std::string, ScenarioEntry> entries_;
     };
 
-    /** \brief The built-in scenarios: light-dark, maze2d, random3d-1 ... random3d-4, multi-drone. */
+    /** \brief The built-in scenarios: light-dark, maze2d, random3d-1 ... random3d-4, multi-drone, sphere-search. */
     const ScenarioRegistry &scenarioRegistry();
 
     /** \brief A data file shipped in scenarios/<folder>/ (a robot URDF, a default configuration), compiled into

@@ -1,0 +1,265 @@
+#include "ropras/scenarios/manipulation/ArmBulletWorld.h"
+
+#include <btBulletCollisionCommon.h>
+
+#include <cmath>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ropras/core/Error.h"
+#include "ropras/scenarios/manipulation/PandaArm.h"
+
+namespace ropras::scenarios
+{
+    namespace
+    {
+        /// user index of obstacles (arm spheres carry their collision link index)
+        constexpr int OBSTACLE = -1;
+
+        btVector3 toBt(const Eigen::Vector3d &v)
+        {
+            return btVector3(static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()), static_cast<btScalar>(v.z()));
+        }
+
+        btTransform toBt(const Eigen::Isometry3d &pose)
+        {
+            const Eigen::Quaterniond q(pose.rotation());
+            return btTransform(btQuaternion(static_cast<btScalar>(q.x()), static_cast<btScalar>(q.y()),
+                                            static_cast<btScalar>(q.z()), static_cast<btScalar>(q.w())),
+                               toBt(pose.translation()));
+        }
+
+        /// admits obstacle-arm pairs and arm-arm pairs of self-collision links
+        struct PairFilter final : btOverlapFilterCallback
+        {
+            bool needBroadphaseCollision(btBroadphaseProxy *a, btBroadphaseProxy *b) const override
+            {
+                const int la = static_cast<const btCollisionObject *>(a->m_clientObject)->getUserIndex();
+                const int lb = static_cast<const btCollisionObject *>(b->m_clientObject)->getUserIndex();
+                if (la == OBSTACLE || lb == OBSTACLE)
+                {
+                    return la != lb;
+                }
+                if (la == lb)
+                {
+                    return false;
+                }
+                return selfPairs.count({std::min(la, lb), std::max(la, lb)}) > 0;
+            }
+            std::set<std::pair<int, int>> selfPairs;
+        };
+
+        struct ObstacleRay final : btCollisionWorld::ClosestRayResultCallback
+        {
+            ObstacleRay(const btVector3 &from, const btVector3 &to) : ClosestRayResultCallback(from, to) {}
+            bool needsCollision(btBroadphaseProxy *proxy) const override
+            {
+                return static_cast<const btCollisionObject *>(proxy->m_clientObject)->getUserIndex() == OBSTACLE;
+            }
+        };
+    }  // namespace
+
+    struct ArmBulletWorld::Impl
+    {
+        Impl(std::shared_ptr<const ompl_ext::RobotModel> r, double m)
+            : robot(std::move(r)),
+              margin(m),
+              dispatcher(&configuration),
+              world(&dispatcher, &broadphase, &configuration)
+        {
+        }
+
+        btCollisionObject *add(std::unique_ptr<btCollisionShape> shape, const btTransform &pose, int userIndex)
+        {
+            auto object = std::make_unique<btCollisionObject>();
+            object->setCollisionShape(shape.get());
+            object->setWorldTransform(pose);
+            object->setUserIndex(userIndex);
+            object->setContactProcessingThreshold(static_cast<btScalar>(margin));
+            world.addCollisionObject(object.get());
+            shapes.push_back(std::move(shape));
+            objects.push_back(std::move(object));
+            return objects.back().get();
+        }
+
+        bool collides(const double *q)
+        {
+            // the reference FK of every link; each collision link is one body (its spheres, compound)
+            const auto links = robot->linkTransformsReference(q);
+            const auto &collisionLinks = robot->collisionLinks();
+            for (std::size_t i = 0; i < arm.size(); ++i)
+            {
+                arm[i]->setWorldTransform(toBt(links[static_cast<std::size_t>(collisionLinks[i].link)]));
+            }
+            world.updateAabbs();
+            world.performDiscreteCollisionDetection();
+            const int manifolds = dispatcher.getNumManifolds();
+            for (int m = 0; m < manifolds; ++m)
+            {
+                const btPersistentManifold *manifold = dispatcher.getManifoldByIndexInternal(m);
+                for (int c = 0; c < manifold->getNumContacts(); ++c)
+                {
+                    if (manifold->getContactPoint(c).getDistance() <= static_cast<btScalar>(margin))
+                    {
+                        return true;
+                    }
+                }
+            }
+            return false;
+        }
+
+        std::shared_ptr<const ompl_ext::RobotModel> robot;
+        double margin;
+        PairFilter filter;
+        btDefaultCollisionConfiguration configuration;
+        btCollisionDispatcher dispatcher;
+        btDbvtBroadphase broadphase;
+        std::vector<std::unique_ptr<btCollisionShape>> shapes;
+        std::vector<std::unique_ptr<btCollisionObject>> objects;
+        btCollisionWorld world;  // after the objects: destroyed before them (releases their proxies itself)
+        std::vector<btCollisionObject *> arm;
+        std::size_t obstacles{0};
+    };
+
+    ArmBulletWorld::ArmBulletWorld(std::shared_ptr<const ompl_ext::RobotModel> robot, double contactMargin)
+    {
+        if (!robot)
+        {
+            throw Error("ArmBulletWorld: null robot");
+        }
+        if (!(contactMargin >= 0.0) || !std::isfinite(contactMargin))
+        {
+            throw Error("ArmBulletWorld: contact margin " + std::to_string(contactMargin) +
+                        " is not a finite value >= 0");
+        }
+        impl_ = std::make_unique<Impl>(std::move(robot), contactMargin);
+        for (const auto &pair : impl_->robot->selfCollisionPairs())
+        {
+            impl_->filter.selfPairs.insert(pair);
+        }
+        impl_->world.getPairCache()->setOverlapFilterCallback(&impl_->filter);
+        btTransform identity;
+        identity.setIdentity();
+        const auto &spheres = impl_->robot->spheres();
+        const auto &links = impl_->robot->collisionLinks();
+        for (std::size_t l = 0; l < links.size(); ++l)
+        {
+            auto compound = std::make_unique<btCompoundShape>();
+            for (int i = links[l].firstSphere; i < links[l].firstSphere + links[l].sphereCount; ++i)
+            {
+                const auto &sphere = spheres[static_cast<std::size_t>(i)];
+                auto child = std::make_unique<btSphereShape>(static_cast<btScalar>(sphere.radius));
+                btTransform local;
+                local.setIdentity();
+                local.setOrigin(toBt(sphere.centerInLink));
+                compound->addChildShape(local, child.get());
+                impl_->shapes.push_back(std::move(child));
+            }
+            impl_->arm.push_back(impl_->add(std::move(compound), identity, static_cast<int>(l)));
+        }
+    }
+
+    ArmBulletWorld::~ArmBulletWorld() = default;
+
+    std::size_t ArmBulletWorld::addSphere(const Eigen::Vector3d &center, double radius)
+    {
+        if (!center.allFinite() || !(radius > 0.0) || !std::isfinite(radius))
+        {
+            throw Error("ArmBulletWorld::addSphere: the centre and radius (" + std::to_string(radius) +
+                        ") must be finite with radius > 0");
+        }
+        impl_->add(std::make_unique<btSphereShape>(static_cast<btScalar>(radius)),
+                   toBt(Eigen::Isometry3d(Eigen::Translation3d(center))), OBSTACLE);
+        return impl_->obstacles++;
+    }
+
+    std::size_t ArmBulletWorld::addBox(const Eigen::Isometry3d &pose, const Eigen::Vector3d &fullExtents)
+    {
+        if (!pose.matrix().allFinite() || !fullExtents.allFinite() || !(fullExtents.minCoeff() > 0.0))
+        {
+            throw Error("ArmBulletWorld::addBox: the pose and extents must be finite with extents > 0");
+        }
+        auto shape = std::make_unique<btBoxShape>(toBt(Eigen::Vector3d(0.5 * fullExtents)));
+        shape->setMargin(0);  // exact corners
+        impl_->add(std::move(shape), toBt(pose), OBSTACLE);
+        return impl_->obstacles++;
+    }
+
+    std::size_t ArmBulletWorld::addCylinder(const Eigen::Isometry3d &pose, double radius, double length)
+    {
+        if (!pose.matrix().allFinite() || !(radius > 0.0) || !(length > 0.0) || !std::isfinite(radius) ||
+            !std::isfinite(length))
+        {
+            throw Error("ArmBulletWorld::addCylinder: the pose, radius and length must be finite with sizes > 0");
+        }
+        auto shape = std::make_unique<btCylinderShapeZ>(btVector3(
+            static_cast<btScalar>(radius), static_cast<btScalar>(radius), static_cast<btScalar>(0.5 * length)));
+        shape->setMargin(0);
+        impl_->add(std::move(shape), toBt(pose), OBSTACLE);
+        return impl_->obstacles++;
+    }
+
+    std::size_t ArmBulletWorld::obstacleCount() const
+    {
+        return impl_->obstacles;
+    }
+
+    bool ArmBulletWorld::collides(const double *q)
+    {
+        return impl_->collides(q);
+    }
+
+    bool ArmBulletWorld::motionValid(const double *q0, const double *q1, double resolution, double *lastValidFraction)
+    {
+        const std::size_t dof = impl_->robot->dof();
+        const std::size_t n = PandaArm::motionSamples(q0, q1, resolution);
+        std::vector<double> q(dof);
+        for (std::size_t k = 1; k <= n; ++k)
+        {
+            const double t = static_cast<double>(k) / static_cast<double>(n);
+            for (std::size_t j = 0; j < dof; ++j)
+            {
+                q[j] = q0[j] + t * (q1[j] - q0[j]);
+            }
+            if (impl_->collides(q.data()))
+            {
+                if (lastValidFraction != nullptr)
+                {
+                    *lastValidFraction = static_cast<double>(k - 1) / static_cast<double>(n);
+                }
+                return false;
+            }
+        }
+        if (lastValidFraction != nullptr)
+        {
+            *lastValidFraction = 1.0;
+        }
+        return true;
+    }
+
+    int ArmBulletWorld::rayTest(const Eigen::Vector3d &from, const Eigen::Vector3d &to, double *fraction) const
+    {
+        ObstacleRay ray(toBt(from), toBt(to));
+        impl_->world.rayTest(toBt(from), toBt(to), ray);
+        if (!ray.hasHit())
+        {
+            return -1;
+        }
+        if (fraction != nullptr)
+        {
+            *fraction = ray.m_closestHitFraction;
+        }
+        int index = 0;
+        for (const auto &object : impl_->objects)
+        {
+            if (object.get() == ray.m_collisionObject)
+            {
+                return index - static_cast<int>(impl_->arm.size());
+            }
+            ++index;
+        }
+        return -1;
+    }
+}  // namespace ropras::scenarios

@@ -1,0 +1,192 @@
+#include "ropras/scenarios/manipulation/ArmPlanning.h"
+
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "ropras/core/Error.h"
+#include "ropras/ompl_ext/kinematics/CollisionFreePredicate.h"
+
+namespace ropras::scenarios
+{
+    ArmGoalSampler::ArmGoalSampler(std::shared_ptr<const PandaArm> arm,
+                                   std::shared_ptr<const ompl_ext::Environment> environment, const Settings &settings,
+                                   std::uint64_t seed)
+        : arm_(std::move(arm)),
+          environment_(std::move(environment)),
+          settings_(settings),
+          ik_(arm_->endEffectorChain()),
+          workspace_(ik_.makeWorkspace()),
+          rng_(seed)
+    {
+        if (!environment_)
+        {
+            throw Error("ArmGoalSampler: null environment");
+        }
+        options_.restarts = settings_.restarts;
+        options_.positionTolerance = 1e-4;
+        options_.validate();
+        valid_ = ompl_ext::collisionFreePredicate(*arm_->checker(), *environment_);
+    }
+
+    bool ArmGoalSampler::solve(const double *seed, const std::array<double, 3> &center, double radius,
+                               double *q) noexcept
+    {
+        Pool *pool = nullptr;
+        for (auto &p : pools_)
+        {
+            if (p.center == center)
+            {
+                pool = &p;
+            }
+        }
+        if (pool == nullptr)
+        {
+            pools_.push_back(Pool{center, {}});
+            pool = &pools_.back();
+        }
+        if (pool->solutions.size() >= settings_.poolSize)
+        {
+            const auto &chosen = pool->solutions[rng_.uniformIndex(pool->solutions.size())];
+            std::copy(chosen.begin(), chosen.end(), q);
+            return true;
+        }
+        const double r = settings_.radiusFraction * radius;
+        for (std::size_t attempt = 0; attempt < settings_.points; ++attempt)
+        {
+            // a point uniform in the ball of radius r (rejection from the cube)
+            Eigen::Vector3d offset;
+            do
+            {
+                offset = Eigen::Vector3d(rng_.uniform(-1, 1), rng_.uniform(-1, 1), rng_.uniform(-1, 1));
+            } while (offset.squaredNorm() > 1.0);
+            const Eigen::Vector3d point = Eigen::Vector3d(center[0], center[1], center[2]) + r * offset;
+            ++solves_;
+            const auto result =
+                ik_.solve(ompl_ext::IkTarget::position(point), seed, rng_, workspace_, q, options_, &valid_);
+            if (result.status == ompl_ext::IkStatus::Solved)
+            {
+                std::array<double, ARM_DOF> solution{};
+                std::copy(q, q + ARM_DOF, solution.begin());
+                pool->solutions.push_back(solution);
+                return true;
+            }
+        }
+        if (!pool->solutions.empty())
+        {
+            const auto &chosen = pool->solutions[rng_.uniformIndex(pool->solutions.size())];
+            std::copy(chosen.begin(), chosen.end(), q);
+            return true;
+        }
+        return false;
+    }
+
+    SphereSearchTargetSpace::SphereSearchTargetSpace(std::shared_ptr<const SphereSearchModel> model,
+                                                     std::shared_ptr<const ompl_ext::Environment> planningEnvironment)
+        : model_(std::move(model)), environment_(std::move(planningEnvironment))
+    {
+        if (!model_ || !environment_)
+        {
+            throw Error("SphereSearchTargetSpace: null model or environment");
+        }
+    }
+
+    ArmTarget SphereSearchTargetSpace::goal(const SphereSearchModel::State &particle) const
+    {
+        ArmTarget t;
+        t.point = model_->goalCenter(particle.goal);
+        t.radius = model_->config().goalRadius;
+        return t;
+    }
+
+    ArmTarget SphereSearchTargetSpace::informative(const SphereSearchModel::State &, std::size_t) const
+    {
+        ArmTarget t;
+        t.point = model_->config().light;
+        t.radius = model_->config().lightRadius;
+        return t;
+    }
+
+    double SphereSearchTargetSpace::distance(const SphereSearchModel::State &agent, const ArmTarget &target) const
+    {
+        const Eigen::Vector3d ee = model_->endEffector(agent);
+        if (target.kind == ArmTarget::Kind::Configuration)
+        {
+            return (ee - model_->arm().endEffectorPosition(target.q.data())).norm();
+        }
+        return (ee - Eigen::Vector3d(target.point[0], target.point[1], target.point[2])).norm();
+    }
+
+    bool SphereSearchTargetSpace::sampleFree(pomdp::Rng &rng, ArmTarget &out) const
+    {
+        const PandaArm &arm = model_->arm();
+        out.kind = ArmTarget::Kind::Configuration;
+        for (int attempt = 0; attempt < 100; ++attempt)
+        {
+            for (std::size_t j = 0; j < ARM_DOF; ++j)
+            {
+                out.q[j] = rng.uniform(arm.lower(j), arm.upper(j));
+            }
+            if (arm.checker()->isValid(*environment_, out.q.data()))
+            {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    ArmPlanningAdapter::ArmPlanningAdapter(std::unique_ptr<ArmGoalSampler> sampler, double step,
+                                           std::size_t macroLength, bool waypoints)
+        : sampler_(std::move(sampler)), step_(step), macroLength_(macroLength), waypoints_(waypoints)
+    {
+        if (!sampler_)
+        {
+            throw Error("ArmPlanningAdapter: null goal sampler");
+        }
+        if (!(step > 0.0) || !std::isfinite(step))
+        {
+            throw Error("arm planning: step " + std::to_string(step) + " must be > 0");
+        }
+        if (macroLength == 0)
+        {
+            throw Error("arm planning: parameter macro_length must be >= 1");
+        }
+    }
+
+    void ArmPlanningAdapter::configuration(const SphereSearchModel::State &state, double *q) const
+    {
+        std::copy(state.q, state.q + ARM_DOF, q);
+    }
+
+    bool ArmPlanningAdapter::targetConfiguration(const SphereSearchModel::State &start, const ArmTarget &target,
+                                                 double *q) const
+    {
+        if (target.kind == ArmTarget::Kind::Configuration)
+        {
+            std::copy(target.q.begin(), target.q.end(), q);
+            return true;
+        }
+        return sampler_->solve(start.q, target.point, target.radius, q);
+    }
+
+    bool ArmPlanningAdapter::pathToMacroAction(const SphereSearchModel::State &, const double *waypoints,
+                                               std::size_t count, std::vector<ArmAction> &out) const
+    {
+        points_.clear();
+        const std::size_t n = pomdp::discretizeJointPath(waypoints, count, ARM_DOF, step_, macroLength_, points_);
+        const double *previous = waypoints;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const double *point = &points_[i * ARM_DOF];
+            ArmAction a;
+            for (std::size_t j = 0; j < ARM_DOF; ++j)
+            {
+                a.dq[j] = waypoints_ ? point[j] : point[j] - previous[j];
+            }
+            a.waypoint = waypoints_;
+            out.push_back(a);
+            previous = point;
+        }
+        return n > 0;
+    }
+}  // namespace ropras::scenarios

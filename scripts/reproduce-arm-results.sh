@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# The arm tables of issue 18 (the paper's "Results on Multi Drones Tag and Sphere Search", Sphere-Search half):
+# B-plan, R-POMCP and ROP-RAS3 (uniform and dynamic), 30 episodes each, at the paper's 150 simulations per call
+# and at a time budget of a tenth of a second per call (the issue's target: <= 0.1 s per call).
+# Usage: scripts/reproduce-arm-results.sh [OUT_DIR] [EPISODES] (defaults: results-arm/, 30); then
+# `ropras table OUT_DIR/ss-*.jsonl`. Long: about 10-20 s per ROP-RAS3 / R-POMCP episode on one core at 150 sims.
+# Extra run options (e.g. --config waypoint.json) may be given in ARM_EXTRA.
+set -u
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+R=${ROPRAS:-$here/build/bin/ropras}
+out=${1:-results-arm}
+n=${2:-30}
+mkdir -p "$out"
+cd "$out"
+run() { # name args...
+  local name=$1
+  shift
+  # shellcheck disable=SC2086
+  "$R" run --episodes "$n" --threads 2 --seed 1 --quiet --out "$name.jsonl" "$@" ${ARM_EXTRA:-} > "$name.table"
+}
+SS="--scenario sphere-search"
+for budget in "sims:--sims 150" "time:--plan-time 0.1"; do
+  tag=${budget%%:*}
+  opt=${budget#*:}
+  # shellcheck disable=SC2086
+  run ss-$tag-bplan-d $SS --solver bplan $opt
+  # shellcheck disable=SC2086
+  run ss-$tag-rpomcp-u $SS --solver rpomcp --heuristic uniform $opt
+  # shellcheck disable=SC2086
+  run ss-$tag-ropras3-u $SS --solver ropras3 --heuristic uniform $opt
+  # shellcheck disable=SC2086
+  run ss-$tag-ropras3-d $SS --solver ropras3 $opt
+done
+"$R" table ss-sims-*.jsonl
+"$R" table ss-time-*.jsonl

@@ -1,0 +1,304 @@
+// Sphere-Search: the embedded Panda, the model against the Bullet world, light and goal, the reference policy,
+// episodes of every solver, and bad configuration values.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <ompl/util/Console.h>
+
+#include "ropras/core/Error.h"
+#include "ropras/scenarios/manipulation/ArmPlanning.h"
+#include "ropras/scenarios/manipulation/SphereSearchScenario.h"
+#include "ropras/scenarios/manipulation/SphereSearchWorld.h"
+
+namespace ropras::scenarios
+{
+    namespace
+    {
+        using State = SphereSearchModel::State;
+
+        struct QuietOmpl : ::testing::Environment
+        {
+            void SetUp() override { ompl::msg::setLogLevel(ompl::msg::LOG_ERROR); }
+        };
+        const auto *const QUIET = ::testing::AddGlobalTestEnvironment(new QuietOmpl);
+
+        const ScenarioParts<SphereSearchModel> &defaultParts()
+        {
+            static const ScenarioParts<SphereSearchModel> parts = sphereSearchParts();
+            return parts;
+        }
+
+        State startState(const SphereSearchModel &model, int goal = 0)
+        {
+            State s;
+            SphereSearchModel::setJoints(s, model.config().start.data());
+            s.goal = goal;
+            return s;
+        }
+
+        /** \brief The smallest signed distance (m) between the arm's spheres and the obstacle spheres or
+            between spheres of self-collision link pairs, at \a q (double-precision reference FK). */
+        double clearance(const SphereSearchModel &model, const double *q)
+        {
+            const auto &robot = *model.arm().robot();
+            const auto centers = robot.sphereCentersReference(q);
+            const auto &spheres = robot.spheres();
+            double best = 1e300;
+            for (std::size_t i = 0; i < spheres.size(); ++i)
+            {
+                for (const auto &o : model.config().obstacles)
+                {
+                    best = std::min(best,
+                                    (centers[i] - Eigen::Vector3d(o[0], o[1], o[2])).norm() - o[3] - spheres[i].radius);
+                }
+            }
+            for (const auto &pair : robot.selfCollisionPairs())
+            {
+                const auto &a = robot.collisionLinks()[static_cast<std::size_t>(pair.first)];
+                const auto &b = robot.collisionLinks()[static_cast<std::size_t>(pair.second)];
+                for (int i = a.firstSphere; i < a.firstSphere + a.sphereCount; ++i)
+                {
+                    for (int j = b.firstSphere; j < b.firstSphere + b.sphereCount; ++j)
+                    {
+                        const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
+                        best = std::min(best,
+                                        (centers[ui] - centers[uj]).norm() - spheres[ui].radius - spheres[uj].radius);
+                    }
+                }
+            }
+            return best;
+        }
+    }  // namespace
+
+    TEST(SphereSearchTest, EmbeddedPandaStartsWhereTheSpecificationSays)
+    {
+        const auto &model = *defaultParts().model;
+        EXPECT_EQ(model.arm().robot()->dof(), ARM_DOF);
+        EXPECT_EQ(model.arm().endEffector(), "panda_grasptarget");
+        // manipulation-scenarios.md 0.4: FK of the VAMP start puts the grasp target at (0.307, 0, 0.485)
+        const Eigen::Vector3d ee = model.endEffector(startState(model));
+        EXPECT_NEAR(ee.x(), 0.307, 1e-3);
+        EXPECT_NEAR(ee.y(), 0.0, 1e-3);
+        EXPECT_NEAR(ee.z(), 0.485, 1e-3);
+        EXPECT_FALSE(model.inLight(startState(model)));
+        EXPECT_FALSE(model.reachedGoal(startState(model)));
+    }
+
+    TEST(SphereSearchTest, ModelAndBulletWorldAgreeOnRandomSteps)
+    {
+        const auto model = defaultParts().model;
+        SphereSearchWorld world(model);
+        const auto &arm = model->arm();
+        core::Rng rng(424242);
+        const double tolerance = 1e-3;  // m: disagreements only this close to contact
+        std::size_t steps = 0, collided = 0, disagreements = 0;
+        double worstClearance = 0.0;
+        while (steps < 2000)
+        {
+            double q0[ARM_DOF], q1[ARM_DOF];
+            for (std::size_t j = 0; j < ARM_DOF; ++j)
+            {
+                q0[j] = rng.uniform(arm.lower(j), arm.upper(j));
+            }
+            if (!arm.checker()->isValid(*model->environment(), q0))
+            {
+                continue;
+            }
+            // a primitive-sized step (0.1 .. 0.5 rad L2) in a random direction
+            double norm = 0.0, dq[ARM_DOF];
+            for (double &d : dq)
+            {
+                d = rng.normal();
+                norm += d * d;
+            }
+            const double length = rng.uniform(0.1, 0.5) / std::sqrt(norm);
+            for (std::size_t j = 0; j < ARM_DOF; ++j)
+            {
+                q1[j] = q0[j] + length * dq[j];
+            }
+            arm.clamp(q1);
+            ++steps;
+            const double resolution = model->config().resolution;
+            const bool modelValid = arm.checker()->isMotionValid(*model->environment(), q0, q1, resolution);
+            const bool worldValid = world.bullet().motionValid(q0, q1, resolution);
+            collided += worldValid ? 0 : 1;
+            if (modelValid != worldValid)
+            {
+                ++disagreements;
+                // the configurations both checked: the closest one to contact decides the disagreement
+                const std::size_t n = PandaArm::motionSamples(q0, q1, resolution);
+                double nearest = 1e300;
+                for (std::size_t k = 1; k <= n; ++k)
+                {
+                    double q[ARM_DOF];
+                    SphereSearchModel::moveAlong(q0, q1, static_cast<double>(k) / static_cast<double>(n), q);
+                    const double c = clearance(*model, q);
+                    nearest = std::abs(c) < std::abs(nearest) ? c : nearest;
+                }
+                worstClearance = std::max(worstClearance, std::abs(nearest));
+                EXPECT_LT(std::abs(nearest), tolerance) << "disagreement " << disagreements << " at step " << steps;
+            }
+        }
+        const double rate = 1.0 - static_cast<double>(disagreements) / static_cast<double>(steps);
+        ::testing::Test::RecordProperty("agreement_rate", std::to_string(rate));
+        std::printf(
+            "model vs Bullet world: %zu random steps, %zu collide (world), %zu disagree (agreement %.4f), "
+            "worst disagreement %.2e m from contact\n",
+            steps, collided, disagreements, rate, worstClearance);
+        EXPECT_GT(collided, steps / 10);  // the test sees many collisions, not only free space
+        EXPECT_GE(rate, 0.995);
+    }
+
+    TEST(SphereSearchTest, TheLightRevealsTheGoalAndTheGoalBallEndsTheEpisode)
+    {
+        const auto &model = *defaultParts().model;
+        const auto &config = model.config();
+        auto env = sphereSearchEnvironment(config, 0.0);
+        ArmGoalSampler sampler(model.armPtr(), env, ArmGoalSampler::Settings(), 11);
+        const State start = startState(model, 1);
+        State lit = start;
+        ASSERT_TRUE(sampler.solve(start.q, config.light, config.lightRadius, lit.q));
+        ASSERT_TRUE(model.inLight(lit));
+        State atGoal = start;
+        ASSERT_TRUE(sampler.solve(start.q, config.goals[1], config.goalRadius, atGoal.q));
+        ASSERT_TRUE(model.reachedGoal(atGoal));
+        atGoal.goal = 0;  // the other goal: not reached there
+        EXPECT_FALSE(model.reachedGoal(atGoal));
+
+        pomdp::Rng rng(3);
+        pomdp::StepResult<State, SphereSearchModel::Observation> out;
+        out.next = lit;
+        model.finishStep(out, false, rng);
+        EXPECT_EQ(out.observation.goal, 1);
+        EXPECT_FALSE(out.terminal);
+        EXPECT_DOUBLE_EQ(out.reward, config.stepReward);
+        State other = lit;
+        other.goal = 0;
+        const SphereSearchModel::Action none;
+        EXPECT_GT(model.observationProbability(out.observation, lit, none), 0.0);
+        EXPECT_EQ(model.observationProbability(out.observation, other, none), 0.0);  // the light rules it out
+        EXPECT_EQ(model.observationKey(out.observation), 2u);
+
+        out = {};
+        out.next = start;
+        model.finishStep(out, false, rng);
+        EXPECT_EQ(out.observation.goal, -1);  // None outside the light
+        EXPECT_EQ(model.observationKey(out.observation), 0u);
+        out = {};
+        out.next = startState(model, 1);
+        SphereSearchModel::setJoints(out.next, atGoal.q);
+        model.finishStep(out, false, rng);
+        EXPECT_TRUE(out.terminal);
+        EXPECT_DOUBLE_EQ(out.reward, config.stepReward + config.goalReward);
+        out = {};
+        out.next = start;
+        model.finishStep(out, true, rng);  // a collision: terminal failure
+        EXPECT_TRUE(out.terminal);
+        EXPECT_DOUBLE_EQ(out.reward, config.stepReward + config.failReward);
+    }
+
+    TEST(SphereSearchTest, ReferenceMacrosFollowCollisionFreePathsInSteps)
+    {
+        const auto &parts = defaultParts();
+        const auto &model = *parts.model;
+        for (const std::string planner : {"VectorizedRRTConnect", "RRTConnect"})
+        {
+            RunSettings settings;
+            settings.planner = planner;
+            settings.heuristic = "uniform";
+            pomdp::ParameterMap params;
+            params.set("plan_time", 0.05);
+            auto policy = parts.referencePolicy(settings, params, 17);
+            pomdp::Rng rng(5);
+            std::vector<State> belief{startState(model, 0), startState(model, 1)};
+            int macros = 0;
+            for (int i = 0; i < 10; ++i)
+            {
+                std::vector<ArmAction> macro;
+                if (!policy->sample(belief[static_cast<std::size_t>(i % 2)], {belief.data(), belief.size()}, rng,
+                                    macro))
+                {
+                    continue;
+                }
+                ++macros;
+                EXPECT_LE(macro.size(), 10u);  // macro_length
+                State s = belief[static_cast<std::size_t>(i % 2)];
+                for (const auto &a : macro)
+                {
+                    double norm = 0.0, next[ARM_DOF];
+                    for (std::size_t j = 0; j < ARM_DOF; ++j)
+                    {
+                        norm += a.dq[j] * a.dq[j];
+                        next[j] = s.q[j] + a.dq[j];
+                    }
+                    EXPECT_LE(std::sqrt(norm), model.config().step + 1e-9);
+                    EXPECT_TRUE(model.arm().checker()->isMotionValid(*model.environment(), s.q, next,
+                                                                     model.config().resolution))
+                        << planner;
+                    SphereSearchModel::setJoints(s, next);
+                }
+            }
+            EXPECT_GE(macros, 5) << planner;
+        }
+    }
+
+    TEST(SphereSearchTest, EverySolverRunsAnEpisodeToTheEnd)
+    {
+        ScenarioOptions options;
+        options.overrides["horizon"] = 12;
+        const auto scenario = makeSphereSearchScenario(options);
+        for (const std::string solver : {"ropras3", "rpomcp", "bplan", "pomcp", "refbasic"})
+        {
+            RunSettings settings;
+            settings.solver = solver;
+            settings.budget.simulations = 8;
+            settings.params.set("particles", 20);
+            scenario->validate(settings);
+            nlohmann::json recording;
+            const auto result = scenario->runEpisode(settings, 99, &recording, RecordSettings());
+            EXPECT_GE(result.steps, 1u) << solver;
+            EXPECT_LE(result.steps, 12u) << solver;
+            EXPECT_TRUE(std::isfinite(result.undiscountedReturn)) << solver;
+            EXPECT_EQ(recording["trajectory"].size(), result.steps + 1) << solver;
+        }
+    }
+
+    TEST(SphereSearchTest, BadConfigurationValuesNameTheKey)
+    {
+        const auto expectError = [](const nlohmann::json &overrides, const std::string &key)
+        {
+            ScenarioOptions options;
+            options.overrides = overrides;
+            try
+            {
+                (void)sphereSearchParts(options);
+                ADD_FAILURE() << "no error for " << overrides.dump();
+            }
+            catch (const Error &e)
+            {
+                EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+            }
+        };
+        expectError({{"step", -0.1}}, "\"step\"");
+        expectError({{"step", "big"}}, "step");
+        expectError({{"goal_radius", 0}}, "\"goal_radius\"");
+        expectError({{"goals", {{0.5, 0.76, 0.4}}}}, "\"goals\"");
+        expectError({{"start", {0, 0, 0}}}, "\"start\"");
+        expectError({{"start", {0, 5, 0, -2.356, 0, 1.571, 0.785}}}, "\"start\"");   // joint 2 outside its limits
+        expectError({{"obstacles", {{0.307, 0.0, 0.485, 0.05}}}}, "\"start\"");      // the start in collision
+        expectError({{"obstacles", {{0.55, 0.0, 0.8, 0.12}}}}, "\"light_center\"");  // the light inside
+        expectError({{"horizon", 1.5}}, "\"horizon\"");
+        expectError({{"discount", 1.5}}, "\"discount\"");
+        expectError({{"planning", {{"margin", -1}}}}, "\"planning.margin\"");
+        expectError({{"planning", {{"ik_points", 0}}}}, "\"planning.ik_points\"");
+        expectError({{"end_effector", "panda_nose"}}, "panda_nose");
+        expectError({{"transition_sigma", -0.02}}, "\"transition_sigma\"");
+        expectError({{"action_mode", "teleport"}}, "\"action_mode\"");
+        expectError({{"color", 1}}, "color");  // unknown key
+    }
+}  // namespace ropras::scenarios
