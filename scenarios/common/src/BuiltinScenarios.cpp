@@ -8,5 +8,6 @@ namespace ropras::scenarios::detail
         addMaze2DScenario(registry);
         addRandom3DScenarios(registry);
         addMultiDroneScenario(registry);
+        addCrossingScenario(registry);
     }
 }  // namespace ropras::scenarios::detail

@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "SvgFootprints.h"
 #include "ropras/core/Error.h"
 #include "ropras/core/InputFile.h"
 
@@ -596,6 +597,10 @@ namespace ropras::scenarios
         {
             robotRadius = std::max(0.0, r.number(scene["robot_radius"], "scene.robot_radius"));
         }
+        // bodies along the paths (a mobile base's footprint, a pedestrian's disc), under the path lines
+        detail::drawBodies(
+            svg, scene, labels, paths,
+            detail::SvgMap{[&f](double x) { return f.x(x); }, [&f](double y) { return f.y(y); }, f.scale}, source);
         svg << "<g id=\"trajectory\">\n";
         for (std::size_t k = 0; k < labels.size(); ++k)
         {
