@@ -11,6 +11,7 @@
 #include <ompl/util/Console.h>
 
 #include "ropras/core/Error.h"
+#include "ropras/pomdp/OmplPathPlanner.h"
 #include "ropras/pomdp/Rng.h"
 #include "ropras/scenarios/SvgRenderer.h"
 #include "ropras/scenarios/crossing/CrossingPlanning.h"
@@ -356,6 +357,33 @@ namespace ropras::scenarios
         EXPECT_FALSE(adapter.pathToMacroAction(s, point, 2, macro));
     }
 
+    TEST(CrossingScenarioTest, PlannerPedestrianCoversItsNextSteps)
+    {
+        // pedestrian_sweep 3 (default) and step (0.1, 0): a capsule from the pedestrian to 0.3 m ahead in +x
+        const auto parts = partsWith(nlohmann::json::object());
+        const auto &c = parts.model->config();
+        ASSERT_DOUBLE_EQ(c.planning.pedestrianSweep, 3.0);
+        const Eigen::Isometry3d pose = crossingPedestrianPose(c, -1.0, 0.2);
+        EXPECT_NEAR(pose.translation().x(), -1.0 + 0.15, 1e-12);
+        EXPECT_NEAR(pose.translation().y(), 0.2, 1e-12);
+        EXPECT_NEAR((pose.linear() * Eigen::Vector3d::UnitZ() - Eigen::Vector3d::UnitX()).norm(), 0.0, 1e-12);
+        // the scene's pedestrian blocks the robot 0.4 m ahead of the pedestrian, not 0.8 m ahead; with sweep 0 it
+        // blocks only around the pedestrian itself
+        const auto robot = loadStretchRobot(c);
+        for (const double sweep : {3.0, 0.0})
+        {
+            const auto p = partsWith({{"planning", {{"pedestrian_sweep", sweep}}}});
+            int id = -1;
+            auto scene = crossingPlanningScene(p.model->config(), crossingLab(p.model->config()), id);
+            pomdp::OmplPathPlanner planner(robot, scene);
+            const auto px = p.model->config().pedestrianStart[0], py = p.model->config().pedestrianStart[1];
+            const double near[3] = {px + 0.4, py - 0.4, PI / 2};  // base front into the capsule, 0.31 m from the sphere
+            const double far[3] = {px + 0.8, py - 0.4, PI / 2};
+            EXPECT_EQ(planner.checker().isValid(*scene, near), sweep == 0.0) << "sweep " << sweep;
+            EXPECT_TRUE(planner.checker().isValid(*scene, far)) << "sweep " << sweep;
+        }
+    }
+
     TEST(CrossingScenarioTest, BadConfigurationsAreErrorsNamingTheKey)
     {
         expectError({{"colour", 1}}, "colour");
@@ -384,6 +412,7 @@ namespace ropras::scenarios
         expectError({{"heuristic_value", 1}}, "heuristic_value");
         expectError({{"planning", {{"lookahead", -0.5}}}}, "planning.lookahead");
         expectError({{"planning", {{"path_nodes", 1}}}}, "planning.path_nodes");
+        expectError({{"planning", {{"pedestrian_sweep", -1}}}}, "planning.pedestrian_sweep");
         expectError({{"planning", {{"speed", 1}}}}, "planning.speed");
         expectError({{"defaults", {{"depth", "deep"}}}}, "depth");
         // A valid override goes through.

@@ -157,13 +157,18 @@ namespace ropras::scenarios
         {
             const KeyReader r(top.at("planning"), c.scenario, "planning.");
             r.requireKnown({"plan_seconds", "reference_plan_time", "resolution", "planner_range", "pedestrian_margin",
-                            "path_nodes", "lookahead", "distance_weight", "heading_weight"});
+                            "pedestrian_sweep", "path_nodes", "lookahead", "distance_weight", "heading_weight"});
             auto &p = c.planning;
             p.planSeconds = r.positive("plan_seconds");
             p.referencePlanTime = r.positive("reference_plan_time");
             p.resolution = r.positive("resolution");
             p.plannerRange = r.positive("planner_range");
             p.pedestrianMargin = r.positive("pedestrian_margin", true);
+            p.pedestrianSweep = r.positive("pedestrian_sweep", true);
+            if (p.pedestrianSweep > 1000.0)
+            {
+                r.fail("pedestrian_sweep", "= " + r.at("pedestrian_sweep").dump() + " must be at most 1000 steps");
+            }
             const double nodes = r.number("path_nodes");
             if (!(nodes >= 2.0) || nodes != std::floor(nodes) || nodes > 1e6)
             {

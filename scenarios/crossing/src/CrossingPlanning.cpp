@@ -60,7 +60,28 @@ namespace ropras::scenarios
                 return points.back();
             }
         };
+
+        /// the length of the planner's pedestrian capsule (0: a sphere)
+        double sweepLength(const CrossingConfig &c)
+        {
+            return c.planning.pedestrianSweep * std::hypot(c.pedestrianStep[0], c.pedestrianStep[1]);
+        }
     }  // namespace
+
+    Eigen::Isometry3d crossingPedestrianPose(const CrossingConfig &c, double px, double py)
+    {
+        Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+        pose.translation() = Eigen::Vector3d(px, py, c.pedestrianHeight);
+        const double length = sweepLength(c);
+        if (length > 0.0)
+        {
+            // the capsule's axis (local z) along the walking direction, from now to pedestrian_sweep steps ahead
+            const Eigen::Vector3d dir = Eigen::Vector3d(c.pedestrianStep[0], c.pedestrianStep[1], 0.0).normalized();
+            pose.linear() = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), dir).toRotationMatrix();
+            pose.translation() += 0.5 * length * dir;
+        }
+        return pose;
+    }
 
     CrossingTargetSpace::CrossingTargetSpace(const CrossingConfig &config)
     {
@@ -129,9 +150,7 @@ namespace ropras::scenarios
 
     bool CrossingPlanningAdapter::poseObstacles(const CrossingState &particle, ompl_ext::Environment &working) const
     {
-        Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-        pose.translation() = Eigen::Vector3d(particle.px, particle.py, model_->config().pedestrianHeight);
-        working.setObjectPose(pedestrian_, pose);
+        working.setObjectPose(pedestrian_, crossingPedestrianPose(model_->config(), particle.px, particle.py));
         return true;
     }
 
@@ -268,12 +287,12 @@ namespace ropras::scenarios
                                                                        int &pedestrianId)
     {
         auto scene = std::make_shared<ompl_ext::Environment>(std::move(lab));
-        pedestrianId = scene->addSphere("pedestrian", Eigen::Vector3d::Zero(),
-                                        config.pedestrianRadius + config.planning.pedestrianMargin);
-        Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-        pose.translation() =
-            Eigen::Vector3d(config.pedestrianStart[0], config.pedestrianStart[1], config.pedestrianHeight);
-        scene->setObjectPose(pedestrianId, pose);
+        const double radius = config.pedestrianRadius + config.planning.pedestrianMargin;
+        const double length = sweepLength(config);
+        pedestrianId = length > 0.0 ? scene->addCapsule("pedestrian", Eigen::Isometry3d::Identity(), radius, length)
+                                    : scene->addSphere("pedestrian", Eigen::Vector3d::Zero(), radius);
+        scene->setObjectPose(pedestrianId,
+                             crossingPedestrianPose(config, config.pedestrianStart[0], config.pedestrianStart[1]));
         return scene;
     }
 }  // namespace ropras::scenarios

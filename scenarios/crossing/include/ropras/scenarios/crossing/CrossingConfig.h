@@ -25,6 +25,7 @@ namespace ropras::scenarios
         double resolution{0.05};         ///< motion-check resolution in (x, y, theta)
         double plannerRange{0.5};        ///< VectorizedRRTConnect extension step
         double pedestrianMargin{0.05};   ///< the planner's pedestrian sphere grows by this (m)
+        double pedestrianSweep{0.0};     ///< the planner's pedestrian spans this many steps ahead (capsule)
         std::size_t pathNodes{5};        ///< the tracker follows the first path_nodes waypoints
         double lookahead{0.5};           ///< lookahead distance along the path (m)
         double distanceWeight{1.0};      ///< tracker cost per m to the lookahead point

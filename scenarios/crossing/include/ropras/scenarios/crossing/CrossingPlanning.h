@@ -40,11 +40,11 @@ namespace ropras::scenarios
 
     /** \brief The reference planner's side of stretch-crossing. The planner is kinematic: it plans the base
         (x, y, theta) of the Stretch robot as three independent joints (no wheel constraint) in the lab with
-        the tables and the particle's pedestrian (a sphere grown by planning.pedestrian_margin, where the
-        particle puts it now). PathToMacroAction is the lookahead tracker, which makes the path drivable:
-        the first planning.path_nodes waypoints form a polyline in (x, y); from the particle's state
-        (including its twist), repeatedly: the point planning.lookahead ahead of the closest point of the
-        polyline is the lookahead point; every one of the 45 twists is predicted with the noise-free drive
+        the tables and the particle's pedestrian (grown by planning.pedestrian_margin; a sphere where the particle
+        puts it now, or a capsule over its next planning.pedestrian_sweep steps). PathToMacroAction is the lookahead
+       tracker, which makes the path drivable: the first planning.path_nodes waypoints form a polyline in (x, y); from
+       the particle's state (including its twist), repeatedly: the point planning.lookahead ahead of the closest point
+       of the polyline is the lookahead point; every one of the 45 twists is predicted with the noise-free drive
         (CrossingModel::predict: the same wheel ramps); the twist minimizing distance_weight x (distance from
         the predicted position to the lookahead point) + heading_weight x (heading error: the angle between
         the predicted heading and the bearing to the lookahead point, forward or backward, whichever is
@@ -83,8 +83,13 @@ namespace ropras::scenarios
     /** \brief The static lab (walls as boxes outside the lab, the tables) as a shared Environment. */
     std::shared_ptr<const ompl_ext::Environment> crossingLab(const CrossingConfig &config);
 
-    /** \brief An overlay of \a lab with the pedestrian sphere (radius pedestrian_radius + planning.pedestrian_margin,
-        named "pedestrian", at the pedestrian's start); its id is written to \a pedestrianId. */
+    /** \brief An overlay of \a lab with the planner's pedestrian, named "pedestrian" (radius pedestrian_radius +
+        planning.pedestrian_margin): a sphere, or with planning.pedestrian_sweep = k > 0 a capsule from the
+        pedestrian's position to k steps ahead (where it walks during a macro); at the pedestrian's start. Its id
+        is written to \a pedestrianId. */
+    /** \brief The pose of the planner's pedestrian object for a pedestrian at (px, py) (see crossingPlanningScene). */
+    Eigen::Isometry3d crossingPedestrianPose(const CrossingConfig &config, double px, double py);
+
     std::shared_ptr<const ompl_ext::Environment> crossingPlanningScene(const CrossingConfig &config,
                                                                        std::shared_ptr<const ompl_ext::Environment> lab,
                                                                        int &pedestrianId);
