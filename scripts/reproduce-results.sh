@@ -52,3 +52,5 @@ done
 for group in ld mz r md; do
   "$R" table "$group"-*.jsonl
 done
+# stretch-crossing: its own table (collisions and too-close steps from the recordings)
+ROPRAS="$R" "$here/scripts/crossing-results.sh" --episodes 30 --seed 1 --threads 2 --out crossing

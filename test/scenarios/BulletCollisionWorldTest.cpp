@@ -74,4 +74,35 @@ namespace ropras::scenarios
         ropras::test::expectErrorMentions([&] { world.collides(3, Eigen::Vector3d(0, 0, 0)); }, {"agent 3"});
         ropras::test::expectErrorMentions([] { BulletCollisionWorld w(-1.0); }, {"contact margin"});
     }
+
+    TEST(BulletCollisionWorld, RigidAgentOfSpheresTurnsWithItsPoseAndNamesWhatItTouches)
+    {
+        BulletCollisionWorld world;
+        world.addBox(Eigen::Vector3d(0, 3, 0), Eigen::Vector3d(5, 0.5, 1));  // y in [2.5, 3.5]
+        // a dumbbell along its x axis: spheres at x = +-1, radius 0.3
+        const auto bar = world.addRigidAgent({{Eigen::Vector3d(1, 0, 0), 0.3}, {Eigen::Vector3d(-1, 0, 0), 0.3}},
+                                             Eigen::Isometry3d::Identity());
+        const auto ball = world.addAgent(0.2, Eigen::Vector3d(0, -3, 0));
+        Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+        pose.translation() = Eigen::Vector3d(0, 1.5, 0);
+        EXPECT_FALSE(world.touching(bar, pose).any());  // lying along x: reaches y = 1.8
+        pose.linear() = Eigen::AngleAxisd(1.5707963267948966, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+        auto t = world.touching(bar, pose);  // turned along y: reaches y = 2.8 > 2.5
+        EXPECT_TRUE(t.obstacle);
+        EXPECT_EQ(t.agents, 0u);
+        pose.translation() = Eigen::Vector3d(0, -1.5, 0);  // the lower sphere at y = -2.5, the ball at -3
+        t = world.touching(bar, pose);
+        EXPECT_FALSE(t.obstacle);
+        EXPECT_EQ(t.agents, std::uint64_t{1} << ball);
+        world.setAgentPose(bar, pose);
+        EXPECT_TRUE(world.collides(ball, Eigen::Vector3d(0, -3, 0)));  // the ball sees the moved bar
+        ropras::test::expectErrorMentions([&] { world.addRigidAgent({}, Eigen::Isometry3d::Identity()); },
+                                          {"addRigidAgent", "no spheres"});
+        ropras::test::expectErrorMentions(
+            [&] {
+                world.addRigidAgent({{Eigen::Vector3d(0, 0, 0), -1.0}}, Eigen::Isometry3d::Identity());
+            },
+            {"addRigidAgent", "radius"});
+        ropras::test::expectErrorMentions([&] { world.touching(7, pose); }, {"touching", "agent 7"});
+    }
 }  // namespace ropras::scenarios

@@ -9,5 +9,6 @@ namespace ropras::scenarios::detail
         addRandom3DScenarios(registry);
         addMultiDroneScenario(registry);
         addSphereSearchScenario(registry);
+        addCrossingScenario(registry);
     }
 }  // namespace ropras::scenarios::detail

@@ -43,6 +43,53 @@ namespace ropras::scenarios
             bool hit{false};
             btScalar margin_;
         };
+
+        /// Records which objects are within the margin of the probe: obstacles (user index -1) and agents (their
+        /// index, set as the user index).
+        struct WhichContacts final : btCollisionWorld::ContactResultCallback
+        {
+            WhichContacts(const btCollisionObject *probe, btScalar margin) : probe_(probe), margin_(margin) {}
+            btScalar addSingleResult(btManifoldPoint &cp, const btCollisionObjectWrapper *a, int, int,
+                                     const btCollisionObjectWrapper *b, int, int) override
+            {
+                if (cp.getDistance() > margin_)
+                {
+                    return 0;
+                }
+                const btCollisionObject *other =
+                    a->getCollisionObject() == probe_ ? b->getCollisionObject() : a->getCollisionObject();
+                const int index = other->getUserIndex();
+                if (index < 0)
+                {
+                    result.obstacle = true;
+                }
+                else if (index < 64)
+                {
+                    result.agents |= std::uint64_t{1} << index;
+                }
+                return 0;
+            }
+            BulletCollisionWorld::Touching result;
+            const btCollisionObject *probe_;
+            btScalar margin_;
+        };
+
+        btTransform toBt(const Eigen::Isometry3d &pose)
+        {
+            const Eigen::Matrix3d r = pose.rotation();
+            btTransform t;
+            t.setBasis(btMatrix3x3(
+                static_cast<btScalar>(r(0, 0)), static_cast<btScalar>(r(0, 1)), static_cast<btScalar>(r(0, 2)),
+                static_cast<btScalar>(r(1, 0)), static_cast<btScalar>(r(1, 1)), static_cast<btScalar>(r(1, 2)),
+                static_cast<btScalar>(r(2, 0)), static_cast<btScalar>(r(2, 1)), static_cast<btScalar>(r(2, 2))));
+            t.setOrigin(toBt(Eigen::Vector3d(pose.translation())));
+            return t;
+        }
+
+        bool finite(const Eigen::Isometry3d &pose)
+        {
+            return pose.matrix().allFinite();
+        }
     }  // namespace
 
     struct BulletCollisionWorld::Impl
@@ -64,6 +111,7 @@ namespace ropras::scenarios
             t.setOrigin(toBt(position));
             object->setWorldTransform(t);
             object->setContactProcessingThreshold(static_cast<btScalar>(margin));
+            object->setUserIndex(-1);
             world.addCollisionObject(object.get());
             shapes.push_back(std::move(shape));
             objects.push_back(std::move(object));
@@ -127,7 +175,68 @@ namespace ropras::scenarios
         }
         impl_->agents.push_back(
             impl_->addObject(std::make_unique<btSphereShape>(static_cast<btScalar>(radius)), position));
+        impl_->agents.back()->setUserIndex(static_cast<int>(impl_->agents.size() - 1));
         return impl_->agents.size() - 1;
+    }
+
+    std::size_t BulletCollisionWorld::addRigidAgent(const std::vector<std::pair<Eigen::Vector3d, double>> &spheres,
+                                                    const Eigen::Isometry3d &pose)
+    {
+        if (spheres.empty() || !finite(pose))
+        {
+            throw Error("BulletCollisionWorld::addRigidAgent: " +
+                        std::string(spheres.empty() ? "no spheres" : "a non-finite pose"));
+        }
+        auto compound = std::make_unique<btCompoundShape>(true, static_cast<int>(spheres.size()));
+        for (const auto &[centre, radius] : spheres)
+        {
+            if (!finite(centre) || !(radius > 0.0) || !std::isfinite(radius))
+            {
+                throw Error("BulletCollisionWorld::addRigidAgent: sphere " + str(centre) + " / radius " +
+                            std::to_string(radius) + " must be finite with radius > 0");
+            }
+            auto child = std::make_unique<btSphereShape>(static_cast<btScalar>(radius));
+            btTransform t;
+            t.setIdentity();
+            t.setOrigin(toBt(centre));
+            compound->addChildShape(t, child.get());
+            impl_->shapes.push_back(std::move(child));
+        }
+        btCollisionObject *object = impl_->addObject(std::move(compound), Eigen::Vector3d::Zero());
+        object->setWorldTransform(toBt(pose));
+        impl_->world.updateSingleAabb(object);
+        impl_->agents.push_back(object);
+        object->setUserIndex(static_cast<int>(impl_->agents.size() - 1));
+        return impl_->agents.size() - 1;
+    }
+
+    void BulletCollisionWorld::setAgentPose(std::size_t agent, const Eigen::Isometry3d &pose)
+    {
+        if (agent >= impl_->agents.size() || !finite(pose))
+        {
+            throw Error("BulletCollisionWorld::setAgentPose: agent " + std::to_string(agent) + " of " +
+                        std::to_string(impl_->agents.size()) + " / its pose is invalid");
+        }
+        btCollisionObject *object = impl_->agents[agent];
+        object->setWorldTransform(toBt(pose));
+        impl_->world.updateSingleAabb(object);
+    }
+
+    BulletCollisionWorld::Touching BulletCollisionWorld::touching(std::size_t agent,
+                                                                  const Eigen::Isometry3d &pose) const
+    {
+        if (agent >= impl_->agents.size() || !finite(pose))
+        {
+            throw Error("BulletCollisionWorld::touching: agent " + std::to_string(agent) + " of " +
+                        std::to_string(impl_->agents.size()) + " / its pose is invalid");
+        }
+        btCollisionObject *object = impl_->agents[agent];
+        const btTransform saved = object->getWorldTransform();
+        object->setWorldTransform(toBt(pose));
+        WhichContacts callback(object, static_cast<btScalar>(impl_->margin));
+        impl_->world.contactTest(object, callback);
+        object->setWorldTransform(saved);
+        return callback.result;
     }
 
     void BulletCollisionWorld::setAgentPosition(std::size_t agent, const Eigen::Vector3d &position)

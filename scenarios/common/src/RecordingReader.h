@@ -36,6 +36,9 @@ namespace ropras::scenarios::detail
     public:
         explicit Reader(std::string source) : source_(std::move(source)) {}
 
+        /// the file (or name) that errors name
+        const std::string &source() const { return source_; }
+
         [[noreturn]] void fail(const std::string &key, const std::string &problem) const
         {
             throw Error(source_ + ": " + key + " " + problem);

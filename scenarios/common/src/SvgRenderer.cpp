@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "RecordingReader.h"
+#include "SvgFootprints.h"
 #include "SvgPicture.h"
 #include "ropras/core/Error.h"
 #include "ropras/core/InputFile.h"
@@ -182,6 +183,14 @@ namespace ropras::scenarios
                     svg << "</g>\n";
                 }
                 svg << "</g>\n";
+            }
+            // bodies along the paths (a mobile base's footprint, a pedestrian's disc), under the path lines; top view
+            if (main)
+            {
+                detail::drawBodies(
+                    svg, scene, p.rec.labels, p.rec.paths,
+                    detail::SvgMap{[&f](double x) { return f.x(x); }, [&f](double y) { return f.y(y); }, f.scale},
+                    r.source());
             }
             // the executed paths, with arrows along them and a filled end
             svg << group("trajectory");

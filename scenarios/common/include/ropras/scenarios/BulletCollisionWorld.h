@@ -2,8 +2,11 @@
 #define ROPRAS_SCENARIOS_BULLET_COLLISION_WORLD_H
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace ropras::scenarios
 {
@@ -30,7 +33,26 @@ namespace ropras::scenarios
         /** \brief A movable sphere (robot, drone) at \a position; returns its agent index. */
         std::size_t addAgent(double radius, const Eigen::Vector3d &position);
 
+        /** \brief A movable rigid body made of spheres (a Bullet compound of btSphereShapes): each
+            (centre in the body frame, radius); returns its agent index. Throws ropras::Error for no sphere, a
+            non-finite centre or pose, or a non-positive radius. */
+        std::size_t addRigidAgent(const std::vector<std::pair<Eigen::Vector3d, double>> &spheres,
+                                  const Eigen::Isometry3d &pose);
+
+        /** \brief What an agent placed at a pose would touch: a static obstacle, and which other agents (bit i
+            = agent i, for agents 0..63). */
+        struct Touching
+        {
+            bool obstacle{false};
+            std::uint64_t agents{0};
+            bool any() const { return obstacle || agents != 0; }
+        };
+        /** \brief What agent \a agent placed at \a pose would touch (its stored pose is left unchanged). */
+        Touching touching(std::size_t agent, const Eigen::Isometry3d &pose) const;
+
         void setAgentPosition(std::size_t agent, const Eigen::Vector3d &position);
+        /** \brief Moves agent \a agent to \a pose (position and orientation). */
+        void setAgentPose(std::size_t agent, const Eigen::Isometry3d &pose);
         Eigen::Vector3d agentPosition(std::size_t agent) const;
 
         /** \brief Whether agent \a agent placed at \a position would touch a static obstacle or another agent

@@ -54,6 +54,9 @@ namespace ropras::scenarios
         std::string robotUrdf;
         /// the robot's planning-joint values (in the URDF's planning order) in a state; empty = not recorded
         std::function<void(const State &, std::vector<double> &)> configuration;
+        /// optional: what a step ended in, by name (e.g. "pedestrian-collision"; "" = nothing), recorded as the
+        /// recording's "events"
+        std::function<std::string(const State &)> event;
         /// solver and filter parameter defaults of this scenario (the user's --param values override them)
         std::map<std::string, double> defaults;
         std::size_t horizon{100};
@@ -133,6 +136,10 @@ namespace ropras::scenarios
             {
                 out_["robot"] = {{"urdf", "embedded:" + parts_.robotUrdf}, {"configurations", nlohmann::json::array()}};
             }
+            if (parts_.event)
+            {
+                out_["events"] = nlohmann::json::array();
+            }
         }
 
         void onStart(const State &trueState, const std::vector<State> &particles) override
@@ -151,6 +158,14 @@ namespace ropras::scenarios
             out_["trajectory"].push_back(pointsOf(result.next));
             addConfiguration(result.next);
             out_["rewards"].push_back(result.reward);
+            if (parts_.event)
+            {
+                const std::string name = parts_.event(result.next);
+                if (!name.empty())
+                {
+                    out_["events"].push_back({{"step", step}, {"event", name}});
+                }
+            }
             last_ = particles;
             lastStep_ = step;
             if (settings_.beliefEvery > 0 && step % settings_.beliefEvery == 0)
