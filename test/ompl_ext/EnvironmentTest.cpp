@@ -322,3 +322,148 @@ TEST(EnvironmentTest, NamesAndIdsAreChecked)
     EXPECT_NEAR(env.spheres()[1].z, 3.0f, 1e-6);
     EXPECT_TRUE(env.objectPose(1).translation().isApprox(Eigen::Vector3d(0, 0, 3)));
 }
+
+TEST(EnvironmentTest, CopiesShareNamesAndShapesUntilOneAddsAnObject)
+{
+    Environment env;
+    env.addBox("a", pose({0, 0, 0}), {1, 1, 1});
+    env.addSphere("b", {2, 0, 0}, 0.5);
+    env.addCylinder("c", pose({0, 2, 0}), 0.2, 1.0);
+    Environment copy = env;
+    copy.addCapsule("d", pose({0, 0, 3}), 0.1, 0.5);
+    copy.setObjectPose("a", pose({1, 1, 1}));
+    // the source keeps its three objects, names and poses
+    EXPECT_EQ(env.objectCount(), 3u);
+    EXPECT_FALSE(env.hasObject("d"));
+    EXPECT_FALSE(env.nameInUse("d"));
+    EXPECT_NE(errorOf([&] { env.objectId("d"); }).find("unknown object 'd'"), std::string::npos);
+    EXPECT_TRUE(env.capsules().empty());
+    EXPECT_TRUE(env.primitiveObjects(ropras::ompl_ext::ShapeType::Capsule).empty());
+    EXPECT_EQ(env.primitiveCount(), 3u);
+    EXPECT_TRUE(env.objectPose(0).isApprox(pose({0, 0, 0})));
+    // the copy has four
+    ASSERT_EQ(copy.objectCount(), 4u);
+    EXPECT_EQ(copy.objectId("d"), 3);
+    EXPECT_EQ(copy.objectName(3), "d");
+    EXPECT_EQ(copy.primitiveObjects(ropras::ompl_ext::ShapeType::Capsule), std::vector<int>{3});
+    EXPECT_EQ(copy.primitiveCount(), 4u);
+    // a copy of the copy adds its own object: neither of the others sees it
+    Environment third = copy;
+    third.addSphere("e", {0, 0, -2}, 0.1);
+    EXPECT_FALSE(copy.hasObject("e"));
+    EXPECT_EQ(third.objectId("e"), 4);
+    EXPECT_EQ(third.primitiveObjects(ropras::ompl_ext::ShapeType::Sphere), (std::vector<int>{1, 4}));
+    EXPECT_EQ(copy.primitiveObjects(ropras::ompl_ext::ShapeType::Sphere), std::vector<int>{1});
+    // clearing a copy leaves the others whole, and the cleared one can be refilled with the same names
+    third.clear();
+    EXPECT_EQ(third.objectCount(), 0u);
+    EXPECT_EQ(third.primitiveCount(), 0u);
+    EXPECT_TRUE(third.obstacleBoxChunks().empty());
+    EXPECT_EQ(copy.objectId("d"), 3);
+    EXPECT_EQ(third.addSphere("a", {0, 0, 0}, 0.1), 0);
+    EXPECT_EQ(env.objectName(0), "a");
+    EXPECT_EQ(env.objectShapes(0)[0].type, ropras::ompl_ext::ShapeType::Box);
+    // the sole owner of its names adds in place; an Environment built the same way answers the same
+    Environment direct;
+    direct.addBox("a", pose({1, 1, 1}), {1, 1, 1});
+    direct.addSphere("b", {2, 0, 0}, 0.5);
+    direct.addCylinder("c", pose({0, 2, 0}), 0.2, 1.0);
+    direct.addCapsule("d", pose({0, 0, 3}), 0.1, 0.5);
+    std::mt19937 rng(8);
+    std::uniform_real_distribution<double> u(-3.0, 4.0);
+    for (int k = 0; k < 200; ++k)
+    {
+        const Eigen::Vector3d x(u(rng), u(rng), u(rng));
+        EXPECT_DOUBLE_EQ(copy.signedDistance(x, 0.05), direct.signedDistance(x, 0.05));
+    }
+}
+
+namespace
+{
+    /// every primitive's lane of Environment::obstacleBoxChunks() holds its box, lanes past the last are empty
+    void expectBoxLanes(const Environment &e, const std::string &what)
+    {
+        using ropras::ompl_ext::OBSTACLE_BOX_LANES;
+        using ropras::ompl_ext::ObstacleAabb;
+        using ropras::ompl_ext::ShapeType;
+        const std::size_t n = e.primitiveCount();
+        if (n < static_cast<std::size_t>(OBSTACLE_BOX_LANES))
+        {
+            EXPECT_TRUE(e.obstacleBoxChunks().empty()) << what;
+            return;
+        }
+        ASSERT_EQ(e.obstacleBoxChunks().size(), (n + OBSTACLE_BOX_LANES - 1) / OBSTACLE_BOX_LANES) << what;
+        std::size_t perType[5] = {0, 0, 0, 0, 0};
+        for (std::size_t k = 0; k < n; ++k)
+        {
+            const ropras::ompl_ext::PrimitiveRef &r = e.primitiveRef(k);
+            // primitives are numbered in the order they were added, their slots per type likewise
+            EXPECT_EQ(static_cast<std::size_t>(r.slot), perType[static_cast<std::size_t>(r.type)]++) << what << k;
+            const auto i = static_cast<std::size_t>(r.slot);
+            const ObstacleAabb &b = r.type == ShapeType::Sphere     ? e.spheres()[i].aabb
+                                    : r.type == ShapeType::Box      ? e.boxes()[i].aabb
+                                    : r.type == ShapeType::Cylinder ? e.cylinders()[i].aabb
+                                    : r.type == ShapeType::Capsule  ? e.capsules()[i].aabb
+                                                                    : e.clouds()[i].aabb;
+            const auto &c = e.obstacleBoxChunks()[k / OBSTACLE_BOX_LANES];
+            const std::size_t l = k % OBSTACLE_BOX_LANES;
+            EXPECT_EQ(c.cx[l], b.cx) << what << k;
+            EXPECT_EQ(c.cy[l], b.cy) << what << k;
+            EXPECT_EQ(c.cz[l], b.cz) << what << k;
+            EXPECT_EQ(c.ex[l], b.ex) << what << k;
+            EXPECT_EQ(c.ey[l], b.ey) << what << k;
+            EXPECT_EQ(c.ez[l], b.ez) << what << k;
+        }
+        for (std::size_t k = n; k % OBSTACLE_BOX_LANES != 0; ++k)
+        {
+            const auto &c = e.obstacleBoxChunks().back();
+            const std::size_t l = k % OBSTACLE_BOX_LANES;
+            EXPECT_EQ(c.ex[l], -std::numeric_limits<float>::infinity()) << what << k;
+            EXPECT_EQ(c.ey[l], -std::numeric_limits<float>::infinity()) << what << k;
+            EXPECT_EQ(c.ez[l], -std::numeric_limits<float>::infinity()) << what << k;
+        }
+    }
+}  // namespace
+
+TEST(EnvironmentTest, ObstacleBoxChunksHoldEveryPrimitiveBoxInOrder)
+{
+    using ropras::ompl_ext::ShapeType;
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<double> u(-2.0, 2.0), s(0.05, 0.5);
+    Environment env;
+    // 19 primitives of every type (three chunks, the last partly empty), one object with several shapes
+    for (int i = 0; i < 4; ++i)
+    {
+        env.addSphere("s" + std::to_string(i), {u(rng), u(rng), u(rng)}, s(rng));
+        env.addBox("b" + std::to_string(i), pose({u(rng), u(rng), u(rng)}, randomRotation(rng)),
+                   {s(rng), s(rng), s(rng)});
+        env.addCylinder("y" + std::to_string(i), pose({u(rng), u(rng), u(rng)}, randomRotation(rng)), s(rng), s(rng));
+        env.addCapsule("p" + std::to_string(i), pose({u(rng), u(rng), u(rng)}, randomRotation(rng)), s(rng), s(rng));
+        expectBoxLanes(env, "while adding, primitive ");
+    }
+    env.addPointCloud("scan", PointCloud::build({{0, 0, 0}, {0.3f, 0.1f, 0}}, 0.02f), pose({1, 0, 0}));
+    Shape offset = Shape::box({0.1, 0.2, 0.3});
+    offset.pose = pose({0.5, 0, 0}, randomRotation(rng));
+    env.addObject("pair", {Shape::sphere(0.1), offset}, pose({0, 1, 0}, randomRotation(rng)));
+    env.setObjectPose("b2", pose({0.3, -0.2, 0.1}, randomRotation(rng)));
+    env.setObjectPose("pair", pose({0.3, 0.2, 0.1}, randomRotation(rng)));
+    ASSERT_EQ(env.primitiveCount(), 19u);
+    expectBoxLanes(env, "mixed, primitive ");
+    const Environment copy = env;
+    expectBoxLanes(copy, "copy, primitive ");
+    EXPECT_EQ(env.primitiveRef(16).type, ShapeType::PointCloud);
+    EXPECT_EQ(env.primitiveRef(17).type, ShapeType::Sphere);
+    EXPECT_EQ(env.primitiveRef(18).type, ShapeType::Box);
+    // objects whose shapes straddle the first chunk (7 -> 10 primitives) and a later one (15 -> 18)
+    for (int before : {7, 15})
+    {
+        Environment e;
+        for (int i = 0; i < before; ++i)
+            e.addSphere("s" + std::to_string(i), {u(rng), u(rng), u(rng)}, s(rng));
+        expectBoxLanes(e, "spheres only, primitive ");
+        e.addObject("three", {Shape::sphere(0.1), offset, Shape::capsule(0.1, 0.2)}, pose({0, 0, 1}));
+        expectBoxLanes(e, "straddling " + std::to_string(before) + ", primitive ");
+        e.setObjectPose("three", pose({1, 0, 1}, randomRotation(rng)));
+        expectBoxLanes(e, "moved, straddling " + std::to_string(before) + ", primitive ");
+    }
+}

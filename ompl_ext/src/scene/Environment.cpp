@@ -1,7 +1,9 @@
 #include "ropras/ompl_ext/scene/Environment.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <sstream>
 
@@ -57,43 +59,103 @@ namespace ropras::ompl_ext
         for (std::size_t k = 0; k < shapes.size(); ++k)
             detail::validateShape("Environment: object '" + name + "'", k, shapes[k]);
 
+        Layout &layout = ownLayout();
         auto def = std::make_shared<ObjectDefinition>();
-        ObjectDefinition &object = *def;
-        object.name = name;
-        object.shapes = std::move(shapes);
-        object.slots.reserve(object.shapes.size());
-        const int id = static_cast<int>(objects_.size());
-        for (const Shape &shape : object.shapes)
+        def->name = name;
+        def->shapes = std::move(shapes);
+        def->firstPrimitive = layout.primitives.size();
+        const int id = static_cast<int>(poses_.size());
+        const auto append = [](auto &queryVector)
         {
-            owners_[static_cast<std::size_t>(shape.type)].push_back(id);
+            queryVector.emplace_back();
+            return static_cast<int>(queryVector.size()) - 1;
+        };
+        for (const Shape &shape : def->shapes)
+        {
+            layout.owners[static_cast<std::size_t>(shape.type)].push_back(id);
+            int slot = 0;
             switch (shape.type)
             {
                 case ShapeType::Sphere:
-                    object.slots.push_back(static_cast<int>(spheres_.size()));
-                    spheres_.emplace_back();
+                    slot = append(spheres_);
                     break;
                 case ShapeType::Box:
-                    object.slots.push_back(static_cast<int>(boxes_.size()));
-                    boxes_.emplace_back();
+                    slot = append(boxes_);
                     break;
                 case ShapeType::Cylinder:
-                    object.slots.push_back(static_cast<int>(cylinders_.size()));
-                    cylinders_.emplace_back();
+                    slot = append(cylinders_);
                     break;
                 case ShapeType::Capsule:
-                    object.slots.push_back(static_cast<int>(capsules_.size()));
-                    capsules_.emplace_back();
+                    slot = append(capsules_);
                     break;
                 case ShapeType::PointCloud:
-                    object.slots.push_back(static_cast<int>(clouds_.size()));
-                    clouds_.emplace_back();
+                    slot = append(clouds_);
+                    break;
+            }
+            layout.primitives.push_back({shape.type, slot});
+        }
+        layout.index.emplace(def->name, id);
+        layout.objects.push_back(std::move(def));
+        poses_.push_back(pose.affine());
+        writeQueryForm(id);
+        extendBoxChunks();
+        return id;
+    }
+
+    void Environment::extendBoxChunks()
+    {
+        const std::size_t n = layout_->primitives.size();
+        if (n < static_cast<std::size_t>(OBSTACLE_BOX_LANES))
+            return;
+        const std::size_t first = boxChunks_.size() * OBSTACLE_BOX_LANES;  // primitives before it have their lanes
+        while (boxChunks_.size() * OBSTACLE_BOX_LANES < n)
+        {
+            // lanes without a primitive: extents -infinity, so that no sphere ever touches them
+            ObstacleBoxChunk empty{};
+            std::fill(std::begin(empty.ex), std::end(empty.ex), -std::numeric_limits<float>::infinity());
+            std::fill(std::begin(empty.ey), std::end(empty.ey), -std::numeric_limits<float>::infinity());
+            std::fill(std::begin(empty.ez), std::end(empty.ez), -std::numeric_limits<float>::infinity());
+            boxChunks_.push_back(empty);
+        }
+        for (std::size_t k = first; k < n; ++k)
+        {
+            const PrimitiveRef &r = layout_->primitives[k];
+            const auto i = static_cast<std::size_t>(r.slot);
+            switch (r.type)
+            {
+                case ShapeType::Sphere:
+                    setBox(k, spheres_[i].aabb);
+                    break;
+                case ShapeType::Box:
+                    setBox(k, boxes_[i].aabb);
+                    break;
+                case ShapeType::Cylinder:
+                    setBox(k, cylinders_[i].aabb);
+                    break;
+                case ShapeType::Capsule:
+                    setBox(k, capsules_[i].aabb);
+                    break;
+                case ShapeType::PointCloud:
+                    setBox(k, clouds_[i].aabb);
                     break;
             }
         }
-        index_.emplace(object.name, static_cast<int>(objects_.size()));
-        objects_.push_back({std::move(def), pose});
-        writeQueryForm(objects_.back());
-        return id;
+    }
+
+    const std::shared_ptr<Environment::Layout> &Environment::emptyLayout()
+    {
+        static const std::shared_ptr<Layout> empty = std::make_shared<Layout>();
+        return empty;
+    }
+
+    Environment::Layout &Environment::ownLayout()
+    {
+        if (layout_.use_count() != 1)
+            layout_ = std::make_shared<Layout>(*layout_);  // the shared one never changes
+        else
+            // sole owner: copies that shared it and were destroyed by other threads have finished reading it
+            std::atomic_thread_fence(std::memory_order_acquire);
+        return *layout_;
     }
 
     int Environment::addSphere(const std::string &name, const Eigen::Vector3d &center, double radius)
@@ -126,57 +188,58 @@ namespace ropras::ompl_ext
 
     void Environment::setObjectPose(int id, const Eigen::Isometry3d &pose)
     {
-        if (id < 0 || static_cast<std::size_t>(id) >= objects_.size())
+        if (id < 0 || static_cast<std::size_t>(id) >= poses_.size())
             throw Error("Environment::setObjectPose: object id " + std::to_string(id) + " out of range (" +
-                        std::to_string(objects_.size()) + " objects)");
-        Object &object = objects_[static_cast<std::size_t>(id)];
+                        std::to_string(poses_.size()) + " objects)");
         const std::string poseError = detail::poseProblem(pose);
         if (!poseError.empty())
-            throw Error("Environment::setObjectPose: object '" + object.def->name + "': " + poseError);
-        object.pose = pose;
-        writeQueryForm(object);
+            throw Error("Environment::setObjectPose: object '" + definition(id).name + "': " + poseError);
+        poses_[static_cast<std::size_t>(id)] = pose.affine();
+        writeQueryForm(id);
     }
 
-    const Eigen::Isometry3d &Environment::objectPose(int id) const
+    Eigen::Isometry3d Environment::objectPose(int id) const
     {
-        if (id < 0 || static_cast<std::size_t>(id) >= objects_.size())
+        if (id < 0 || static_cast<std::size_t>(id) >= poses_.size())
             throw Error("Environment::objectPose: object id " + std::to_string(id) + " out of range (" +
-                        std::to_string(objects_.size()) + " objects)");
-        return objects_[static_cast<std::size_t>(id)].pose;
+                        std::to_string(poses_.size()) + " objects)");
+        Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+        pose.affine() = poses_[static_cast<std::size_t>(id)];
+        return pose;
     }
 
     int Environment::objectId(const std::string &name) const
     {
-        const auto it = index_.find(name);
-        if (it != index_.end())
+        const auto it = layout_->index.find(name);
+        if (it != layout_->index.end())
             return it->second;
         std::string known;  // the first 20 names (a scene may have 100 000 objects)
-        for (std::size_t i = 0; i < objects_.size() && i < 20; ++i)
-            known += (known.empty() ? "" : ", ") + objects_[i].def->name;
-        if (objects_.size() > 20)
-            known += ", ... (" + std::to_string(objects_.size()) + " objects)";
+        for (std::size_t i = 0; i < layout_->objects.size() && i < 20; ++i)
+            known += (known.empty() ? "" : ", ") + layout_->objects[i]->name;
+        if (layout_->objects.size() > 20)
+            known += ", ... (" + std::to_string(layout_->objects.size()) + " objects)";
         throw Error("Environment: unknown object '" + name + "' (objects: " + (known.empty() ? "none" : known) + ")");
     }
 
     bool Environment::hasObject(const std::string &name) const
     {
-        return index_.count(name) != 0;
+        return layout_->index.count(name) != 0;
     }
 
     const std::string &Environment::objectName(int id) const
     {
-        if (id < 0 || static_cast<std::size_t>(id) >= objects_.size())
+        if (id < 0 || static_cast<std::size_t>(id) >= poses_.size())
             throw Error("Environment::objectName: object id " + std::to_string(id) + " out of range (" +
-                        std::to_string(objects_.size()) + " objects)");
-        return objects_[static_cast<std::size_t>(id)].def->name;
+                        std::to_string(poses_.size()) + " objects)");
+        return definition(id).name;
     }
 
     const std::vector<Shape> &Environment::objectShapes(int id) const
     {
-        if (id < 0 || static_cast<std::size_t>(id) >= objects_.size())
+        if (id < 0 || static_cast<std::size_t>(id) >= poses_.size())
             throw Error("Environment::objectShapes: object id " + std::to_string(id) + " out of range (" +
-                        std::to_string(objects_.size()) + " objects)");
-        return objects_[static_cast<std::size_t>(id)].def->shapes;
+                        std::to_string(poses_.size()) + " objects)");
+        return definition(id).shapes;
     }
 
     bool Environment::nameInUse(const std::string &name) const
@@ -230,24 +293,23 @@ namespace ropras::ompl_ext
     void Environment::clear()
     {
         attached_.clear();
-        objects_.clear();
-        index_.clear();
+        layout_ = emptyLayout();
+        poses_.clear();
         spheres_.clear();
         boxes_.clear();
         cylinders_.clear();
         capsules_.clear();
         clouds_.clear();
-        for (std::vector<int> &owners : owners_)
-            owners.clear();
+        boxChunks_.clear();
     }
 
     Eigen::Isometry3d Environment::shapeWorldPose(int id, std::size_t k) const
     {
         const std::vector<Shape> &shapes = objectShapes(id);
         if (k >= shapes.size())
-            throw Error("Environment::shapeWorldPose: object '" + objects_[static_cast<std::size_t>(id)].def->name +
-                        "' has " + std::to_string(shapes.size()) + " shapes, asked for shape " + std::to_string(k));
-        return objects_[static_cast<std::size_t>(id)].pose * shapes[k].pose;
+            throw Error("Environment::shapeWorldPose: object '" + definition(id).name + "' has " +
+                        std::to_string(shapes.size()) + " shapes, asked for shape " + std::to_string(k));
+        return objectPose(id) * shapes[k].pose;
     }
 
     namespace
@@ -293,16 +355,31 @@ namespace ropras::ompl_ext
         }
     }  // namespace
 
-    void Environment::writeQueryForm(const Object &object)
+    void Environment::setBox(std::size_t primitive, const ObstacleAabb &box)
     {
-        const ObjectDefinition &def = *object.def;
+        ObstacleBoxChunk &chunk = boxChunks_[primitive / OBSTACLE_BOX_LANES];
+        const std::size_t lane = primitive % OBSTACLE_BOX_LANES;
+        chunk.cx[lane] = box.cx;
+        chunk.cy[lane] = box.cy;
+        chunk.cz[lane] = box.cz;
+        chunk.ex[lane] = box.ex;
+        chunk.ey[lane] = box.ey;
+        chunk.ez[lane] = box.ez;
+    }
+
+    void Environment::writeQueryForm(int id)
+    {
+        const ObjectDefinition &def = definition(id);
+        const Eigen::Isometry3d pose = objectPose(id);
+        const std::size_t chunked = boxChunks_.size() * OBSTACLE_BOX_LANES;  // primitives with a lane
         for (std::size_t k = 0; k < def.shapes.size(); ++k)
         {
             const Shape &shape = def.shapes[k];
-            const Eigen::Isometry3d world = object.pose * shape.pose;
+            const Eigen::Isometry3d world = pose * shape.pose;
             const Eigen::Vector3d c = world.translation();
             const Eigen::Matrix3d r = world.linear();
-            const auto slot = static_cast<std::size_t>(def.slots[k]);
+            const std::size_t primitive = def.firstPrimitive + k;
+            const auto slot = static_cast<std::size_t>(layout_->primitives[primitive].slot);
             switch (shape.type)
             {
                 case ShapeType::Sphere:
@@ -313,6 +390,8 @@ namespace ropras::ompl_ext
                     o.z = static_cast<float>(c.z());
                     o.r = static_cast<float>(shape.radius);
                     o.aabb = worldBox(o);
+                    if (primitive < chunked)
+                        setBox(primitive, o.aabb);
                     break;
                 }
                 case ShapeType::Box:
@@ -329,6 +408,8 @@ namespace ropras::ompl_ext
                     b.hz = static_cast<float>(0.5 * shape.extents.z());
                     b.boundRadius = static_cast<float>(0.5 * shape.extents.norm());
                     b.aabb = worldBox(b);
+                    if (primitive < chunked)
+                        setBox(primitive, b.aabb);
                     break;
                 }
                 case ShapeType::Cylinder:
@@ -343,8 +424,11 @@ namespace ropras::ompl_ext
                     y.az = static_cast<float>(axis.z());
                     y.halfLength = static_cast<float>(0.5 * shape.length);
                     y.radius = static_cast<float>(shape.radius);
-                    y.boundRadius = static_cast<float>(std::hypot(0.5 * shape.length, shape.radius));
+                    y.boundRadius =
+                        static_cast<float>(std::sqrt(0.25 * shape.length * shape.length + shape.radius * shape.radius));
                     y.aabb = worldBox(y);
+                    if (primitive < chunked)
+                        setBox(primitive, y.aabb);
                     break;
                 }
                 case ShapeType::Capsule:
@@ -361,6 +445,8 @@ namespace ropras::ompl_ext
                     p.radius = static_cast<float>(shape.radius);
                     p.invLengthSq = shape.length > 0.0 ? static_cast<float>(1.0 / (shape.length * shape.length)) : 0.0f;
                     p.aabb = worldBox(p);
+                    if (primitive < chunked)
+                        setBox(primitive, p.aabb);
                     break;
                 }
                 case ShapeType::PointCloud:
@@ -386,6 +472,8 @@ namespace ropras::ompl_ext
                                                            1e-5 * (1.0 + centre.norm() + (hi - lo).norm()));
                     }
                     q.aabb = worldBox(q);
+                    if (primitive < chunked)
+                        setBox(primitive, q.aabb);
                     break;
                 }
             }
@@ -395,7 +483,7 @@ namespace ropras::ompl_ext
     double Environment::signedDistance(const Eigen::Vector3d &center, double radius) const
     {
         double best = std::numeric_limits<double>::infinity();
-        for (std::size_t id = 0; id < objects_.size(); ++id)
+        for (std::size_t id = 0; id < poses_.size(); ++id)
             best = std::min(best, objectSignedDistance(static_cast<int>(id), center, radius));
         if (base_)
             best = std::min(best, base_->signedDistance(center, radius));
@@ -405,7 +493,7 @@ namespace ropras::ompl_ext
     double Environment::objectSignedDistance(int id, const Eigen::Vector3d &center, double radius) const
     {
         const std::vector<Shape> &shapes = objectShapes(id);
-        const Eigen::Isometry3d &pose = objects_[static_cast<std::size_t>(id)].pose;
+        const Eigen::Isometry3d pose = objectPose(id);
         double best = std::numeric_limits<double>::infinity();
         for (const Shape &shape : shapes)
         {

@@ -47,6 +47,66 @@ namespace ropras::ompl_ext::simd
                     fma(V::broadcast(m[6]), ly, fma(V::broadcast(m[10]), lz, V::broadcast(m[14]))));
         }
 
+        static_assert(OBSTACLE_BOX_LANES == WIDTH, "the obstacle box chunks hold one vector per coordinate");
+
+        /// lanes of the eight obstacle boxes of \a c that the sphere (bx, by, bz; rr = radius^2) touches
+        static unsigned nearBoxes(const ObstacleBoxChunk &c, const V &bx, const V &by, const V &bz,
+                                  const V &rr) noexcept
+        {
+            const V zero = V::zero();
+            const V dx = max(abs(V::load(c.cx) - bx) - V::load(c.ex), zero);
+            const V dy = max(abs(V::load(c.cy) - by) - V::load(c.ey), zero);
+            const V dz = max(abs(V::load(c.cz) - bz) - V::load(c.ez), zero);
+            return cmpLe(fma(dx, dx, fma(dy, dy, dz * dz)), rr).bits();
+        }
+
+        /// one chunk of WIDTH placed body spheres (x, y, z, r; padding repeats real spheres) against a primitive of e
+        static bool hitPrimitive(const Environment &e, const PrimitiveRef &ref, const V &x, const V &y, const V &z,
+                                 const V &r) noexcept
+        {
+            const auto i = static_cast<std::size_t>(ref.slot);
+            switch (ref.type)
+            {
+                case ShapeType::Sphere:
+                    return hitObstacle(x, y, z, r, e.spheres()[i]).bits() != 0u;
+                case ShapeType::Box:
+                    return hitObstacle(x, y, z, r, e.boxes()[i]).bits() != 0u;
+                case ShapeType::Cylinder:
+                    return hitObstacle(x, y, z, r, e.cylinders()[i]).bits() != 0u;
+                case ShapeType::Capsule:
+                    return hitObstacle(x, y, z, r, e.capsules()[i]).bits() != 0u;
+                case ShapeType::PointCloud:
+                {
+                    const CloudObstacle &o = e.clouds()[i];
+                    if (o.boundRadius < 0.0f)
+                        return false;
+                    const unsigned cand = boundTest(x, y, z, r, o.cx, o.cy, o.cz, o.boundRadius).bits();
+                    return cand != 0u && hitCloud(x, y, z, r, o, cand) != 0u;
+                }
+            }
+            return false;
+        }
+
+        static const ObstacleAabb &boxOf(const Environment &e, const PrimitiveRef &ref) noexcept
+        {
+            const auto i = static_cast<std::size_t>(ref.slot);
+            switch (ref.type)
+            {
+                case ShapeType::Sphere:
+                    return e.spheres()[i].aabb;
+                case ShapeType::Box:
+                    return e.boxes()[i].aabb;
+                case ShapeType::Cylinder:
+                    return e.cylinders()[i].aabb;
+                case ShapeType::Capsule:
+                    return e.capsules()[i].aabb;
+                case ShapeType::PointCloud:
+                    break;
+            }
+            return e.clouds()[i].aabb;
+        }
+
+        /// the scalar sphere-versus-box test (for Environments with too few primitives for a chunk)
         static bool sphereTouchesAabb(const float *c, float r, const ObstacleAabb &b) noexcept
         {
             const float dx = std::max(std::abs(c[0] - b.cx) - b.ex, 0.0f);
@@ -55,28 +115,51 @@ namespace ropras::ompl_ext::simd
             return dx * dx + dy * dy + dz * dz <= r * r;
         }
 
-        /// one chunk of WIDTH placed body spheres (x, y, z, r; padding repeats real spheres) against the obstacles
-        static bool obstaclesSingle(const Environment &env, const AttachedSpheres &a, const float *bound, const V &x,
-                                    const V &y, const V &z, const V &r) noexcept
+        /** \brief The body (carried by frame \a m, bound centre \a bound) against the obstacles of env and its bases:
+            its bound against eight obstacle boxes at a time (Environment::obstacleBoxChunks; one at a time in an
+            Environment without chunks), then its spheres, a chunk at a time, against each obstacle that survives. */
+        static bool obstaclesSingle(const Environment &env, const AttachedSpheres &a, const float *m,
+                                    const float *bound) noexcept
         {
-            const auto anyHit = [&](const auto &obstacles)
+            const V bx = V::broadcast(bound[0]), by = V::broadcast(bound[1]), bz = V::broadcast(bound[2]);
+            const V rr = V::broadcast(a.br * a.br);
+            V x0, y0, z0;
+            placeChunk(m, a, 0, x0, y0, z0);
+            const V r0 = V::load(a.r.data());
+            const auto survivor = [&](const Environment &e, const PrimitiveRef &ref)
             {
-                for (const auto &o : obstacles)
-                    if (sphereTouchesAabb(bound, a.br, o.aabb) && hitObstacle(x, y, z, r, o).bits() != 0u)
+                if (hitPrimitive(e, ref, x0, y0, z0, r0))
+                    return true;
+                for (std::size_t s = WIDTH; s < a.x.size(); s += WIDTH)
+                {
+                    V x, y, z;
+                    placeChunk(m, a, s, x, y, z);
+                    if (hitPrimitive(e, ref, x, y, z, V::load(a.r.data() + s)))
                         return true;
+                }
                 return false;
             };
             for (const Environment *e = &env; e != nullptr; e = e->base())
             {
-                if (anyHit(e->spheres()) || anyHit(e->boxes()) || anyHit(e->cylinders()) || anyHit(e->capsules()))
-                    return true;
-                for (const CloudObstacle &o : e->clouds())
+                const std::vector<ObstacleBoxChunk> &chunks = e->obstacleBoxChunks();
+                if (chunks.empty())
+                    for (std::size_t k = 0; k < e->primitiveCount(); ++k)
+                    {
+                        const PrimitiveRef &ref = e->primitiveRef(k);
+                        if (sphereTouchesAabb(bound, a.br, boxOf(*e, ref)) && survivor(*e, ref))
+                            return true;
+                    }
+                for (std::size_t c = 0; c < chunks.size(); ++c)
                 {
-                    if (o.boundRadius < 0.0f || !sphereTouchesAabb(bound, a.br, o.aabb))
-                        continue;
-                    const unsigned cand = boundTest(x, y, z, r, o.cx, o.cy, o.cz, o.boundRadius).bits();
-                    if (cand != 0u && hitCloud(x, y, z, r, o, cand) != 0u)
-                        return true;
+                    unsigned bits = nearBoxes(chunks[c], bx, by, bz, rr);
+                    while (bits != 0u)
+                    {
+                        const PrimitiveRef &ref =
+                            e->primitiveRef(c * OBSTACLE_BOX_LANES + static_cast<std::size_t>(__builtin_ctz(bits)));
+                        bits &= bits - 1u;
+                        if (survivor(*e, ref))
+                            return true;
+                    }
                 }
             }
             return false;
@@ -97,13 +180,21 @@ namespace ropras::ompl_ext::simd
                 const V dx = V::load(lx + c) - bx, dy = V::load(ly + c) - by, dz = V::load(lz + c) - bz;
                 const V rr = V::load(p.linkRadius.data() + c) + br;
                 unsigned bits = cmpLe(fma(dx, dx, fma(dy, dy, dz * dz)), rr * rr).bits();
+                if (bits == 0u)
+                    continue;
+                // the links it may touch and those of its own frame (always near it) leave without a branch each
+                const int end = std::min<int>(WIDTH, static_cast<int>(p.links.size()) - c);
+                unsigned skip = 0u;
+                for (int k = 0; k < end; ++k)
+                    skip |= static_cast<unsigned>(a.skipLink[static_cast<std::size_t>(
+                                                      p.links[static_cast<std::size_t>(c + k)].collisionLink)] != 0)
+                            << k;
+                bits &= ~skip;
                 while (bits != 0u)
                 {
                     const int li = c + __builtin_ctz(bits);
                     bits &= bits - 1u;
                     const LinkOp &link = p.links[static_cast<std::size_t>(li)];
-                    if (a.skipLink[static_cast<std::size_t>(link.collisionLink)] != 0)
-                        continue;
                     K::ensure(p, buf, placed, li);
                     const V sx = V::load(buf + l.sx + link.first), sy = V::load(buf + l.sy + link.first),
                             sz = V::load(buf + l.sz + link.first), sr = V::load(p.sr.data() + link.first);
@@ -115,17 +206,16 @@ namespace ropras::ompl_ext::simd
             return false;
         }
 
-        /// the body (placed one chunk of WIDTH spheres at a time) against the obstacles and the robot
+        /// the body against the obstacles, then (placed one chunk of WIDTH spheres at a time) against the robot
         static bool bodySingle(const KinematicProgram &p, const Environment &env, const AttachedSpheres &a, float *buf,
                                Placed &placed, const float *m, const float *bound) noexcept
         {
+            if (obstaclesSingle(env, a, m, bound))
+                return true;
             for (std::size_t s = 0; s < a.x.size(); s += WIDTH)
             {
                 V x, y, z;
                 placeChunk(m, a, s, x, y, z);
-                const V r = V::load(a.r.data() + s);
-                if (obstaclesSingle(env, a, bound, x, y, z, r))
-                    return true;
                 float cx[WIDTH], cy[WIDTH], cz[WIDTH];
                 x.store(cx);
                 y.store(cy);

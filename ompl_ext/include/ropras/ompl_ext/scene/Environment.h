@@ -60,9 +60,29 @@ namespace ropras::ompl_ext
         ObstacleAabb aabb;
     };
 
+    /// primitives per ObstacleBoxChunk (the SIMD width of the collision kernels)
+    constexpr int OBSTACLE_BOX_LANES = 8;
+
+    /** \brief The world boxes (ObstacleAabb) of eight primitives side by side, so that a kernel culls eight
+        obstacles with one vector test. Lanes past the last primitive have extents -infinity: nothing touches them. */
+    struct ObstacleBoxChunk
+    {
+        float cx[OBSTACLE_BOX_LANES], cy[OBSTACLE_BOX_LANES], cz[OBSTACLE_BOX_LANES];
+        float ex[OBSTACLE_BOX_LANES], ey[OBSTACLE_BOX_LANES], ez[OBSTACLE_BOX_LANES];
+    };
+
+    /// a primitive of the query form: its type and its index into that type's query vector (spheres(), boxes(), ...)
+    struct PrimitiveRef
+    {
+        ShapeType type;
+        int slot;
+    };
+
     /** \brief A set of named obstacles, optionally over a shared base, with the bodies attached to the robot.
 
-        Value type: copying is cheap (primitives are a few floats each, point clouds and the base are shared), and
+        Value type: copying is cheap. What only addObject() and clear() change (names, shapes, the name index, which
+        object owns each primitive) is shared by the copies and copied only when a copy adds an object; a copy owns
+        just the object poses and the query form (a few floats per primitive); point clouds and the base are shared.
         setObjectPose() moves one object in O(its primitives).
 
         **Per-particle scenes.** An Environment made with a base (Environment(base)) checks the base's obstacles
@@ -105,13 +125,13 @@ namespace ropras::ompl_ext
         {
             setObjectPose(objectId(name), pose);
         }
-        const Eigen::Isometry3d &objectPose(int id) const;
+        Eigen::Isometry3d objectPose(int id) const;
         int objectId(const std::string &name) const;  ///< throws Error listing the object names if unknown
         /// an object of this Environment (not of its base)
         bool hasObject(const std::string &name) const;
         /// an object or attached body of this Environment or of a base has this name
         bool nameInUse(const std::string &name) const;
-        std::size_t objectCount() const { return objects_.size(); }
+        std::size_t objectCount() const { return poses_.size(); }
         const std::string &objectName(int id) const;
         const std::vector<Shape> &objectShapes(int id) const;
         /// removes this Environment's objects and attached bodies (the base stays)
@@ -129,8 +149,16 @@ namespace ropras::ompl_ext
         /// the object id owning each entry of the query vector of \a type (indexed like spheres(), boxes(), ...)
         const std::vector<int> &primitiveObjects(ShapeType type) const
         {
-            return owners_[static_cast<std::size_t>(type)];
+            return layout_->owners[static_cast<std::size_t>(type)];
         }
+        /** \brief The world boxes of this Environment's primitives (every type, in the order they were added),
+            eight per chunk: lane i of chunk c is primitiveRef(OBSTACLE_BOX_LANES * c + i). Empty while the
+            Environment has fewer than OBSTACLE_BOX_LANES primitives (a particle's few movable objects cost no
+            chunk; the kernels test such primitives one at a time). */
+        const std::vector<ObstacleBoxChunk> &obstacleBoxChunks() const { return boxChunks_; }
+        std::size_t primitiveCount() const noexcept { return layout_->primitives.size(); }
+        /// primitive \a i (< primitiveCount()) of that order
+        const PrimitiveRef &primitiveRef(std::size_t i) const noexcept { return layout_->primitives[i]; }
 
         /** \brief Attaches \a body to a link of \a robot (see AttachedBody; non-sphere geometry is spherized with
             \a spherizer); returns its index (attachedBody(i)). The name must be unique among objects and attached
@@ -156,36 +184,48 @@ namespace ropras::ompl_ext
         double objectSignedDistance(int id, const Eigen::Vector3d &center, double radius) const;
 
     private:
-        /// what never changes about an object: shared by the copies of an Environment (a particle's copy costs
-        /// a pointer per object, not its name and shapes)
+        /// what never changes about an object
         struct ObjectDefinition
         {
             std::string name;
             std::vector<Shape> shapes;
-            std::vector<int> slots;  ///< per shape: index into the query vector of its type
+            std::size_t firstPrimitive{0};  ///< its shapes are primitives firstPrimitive, firstPrimitive + 1, ...
         };
-        struct Object
+        /** \brief What only addObject() and clear() change, shared by the copies of an Environment (a particle's
+            copy costs a pointer, not the names, shapes and name index) and copied on write (ownLayout()). */
+        struct Layout
         {
-            std::shared_ptr<const ObjectDefinition> def;
-            Eigen::Isometry3d pose;
+            std::vector<std::shared_ptr<const ObjectDefinition>> objects;
+            /// object name -> id (so adding n objects costs O(n), not O(n^2) name comparisons)
+            std::unordered_map<std::string, int> index;
+            std::vector<PrimitiveRef> primitives;
+            std::vector<int> owners[5];  ///< per ShapeType: object id of each query-form entry
         };
         struct Attached
         {
             std::shared_ptr<const AttachedBody> body;
             std::shared_ptr<const AttachedSpheres> spheres;
         };
-        void writeQueryForm(const Object &object);
-        std::vector<Object> objects_;
-        /// object name -> index into objects_ (so adding n objects costs O(n), not O(n^2) name comparisons)
-        std::unordered_map<std::string, int> index_;
+        /// the layout shared by every Environment that has no object (never changed: it is never unique)
+        static const std::shared_ptr<Layout> &emptyLayout();
+        /// the layout, first copied when another Environment shares it
+        Layout &ownLayout();
+        const ObjectDefinition &definition(int id) const { return *layout_->objects[static_cast<std::size_t>(id)]; }
+        void writeQueryForm(int id);
+        void setBox(std::size_t primitive, const ObstacleAabb &box);
+        /// adds the chunks that primitives past the last chunk need (none below OBSTACLE_BOX_LANES primitives)
+        void extendBoxChunks();
+        std::shared_ptr<Layout> layout_{emptyLayout()};  ///< never null
+        /// per object id: the top three rows of its pose (the last row is 0 0 0 1)
+        std::vector<Eigen::Matrix<double, 3, 4>> poses_;
         std::vector<SphereObstacle> spheres_;
         std::vector<BoxObstacle> boxes_;
         std::vector<CylinderObstacle> cylinders_;
         std::vector<CapsuleObstacle> capsules_;
         std::vector<CloudObstacle> clouds_;
+        std::vector<ObstacleBoxChunk> boxChunks_;
         std::shared_ptr<const Environment> base_;
         std::vector<Attached> attached_;
-        std::vector<int> owners_[5];  ///< per ShapeType: object id of each query-form entry
     };
 }  // namespace ropras::ompl_ext
 
