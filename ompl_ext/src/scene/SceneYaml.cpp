@@ -5,12 +5,15 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <set>
 #include <sstream>
 #include <vector>
 
 #include "ropras/core/Error.h"
 #include "ropras/core/InputFile.h"
+#include "ropras/ompl_ext/scene/PointCloud.h"
+#include "ropras/ompl_ext/scene/PointCloudFile.h"
 
 namespace ropras::ompl_ext
 {
@@ -280,12 +283,10 @@ namespace ropras::ompl_ext
             return shapes;
         }
 
-        void readCollisionObject(const Reader &reader, const YAML::Node &node, const std::string &where,
-                                 std::set<std::string> &ids, Environment &env)
+        /// the object's id (node.id: non-empty, unique in \a ids)
+        std::string objectId(const Reader &reader, const YAML::Node &node, const std::string &where,
+                             std::set<std::string> &ids)
         {
-            if (!node.IsMap())
-                reader.fail(node, where,
-                            "expected a collision object (a mapping with id, primitives, primitive_poses)");
             const YAML::Node idNode = reader.child(node, "id", where);
             const std::string id = reader.string(idNode, where + ".id");
             if (id.empty())
@@ -293,6 +294,17 @@ namespace ropras::ompl_ext
             const std::string at = where + " '" + id + "'";
             if (!ids.insert(id).second)
                 reader.fail(idNode, at, "duplicate object id '" + id + "'");
+            return id;
+        }
+
+        void readCollisionObject(const Reader &reader, const YAML::Node &node, const std::string &where,
+                                 std::set<std::string> &ids, Environment &env)
+        {
+            if (!node.IsMap())
+                reader.fail(node, where,
+                            "expected a collision object (a mapping with id, primitives, primitive_poses)");
+            const std::string id = objectId(reader, node, where, ids);
+            const std::string at = where + " '" + id + "'";
 
             if (const YAML::Node op = node["operation"]; op.IsDefined() && !op.IsNull())
             {
@@ -398,6 +410,49 @@ namespace ropras::ompl_ext
                                    env);
         }
 
+        /** world.point_clouds[i] (a ropras extension: MoveIt scenes carry no point cloud files): id, file (PCD or
+            PLY, relative to the scene file's folder), point_radius (m, default 0), pose (the sensor's, default
+            identity), drop_non_finite (default false) */
+        void readPointCloud(const Reader &reader, const YAML::Node &node, const std::string &where,
+                            std::set<std::string> &ids, Environment &env)
+        {
+            if (!node.IsMap())
+                reader.fail(node, where, "expected a point cloud (a mapping with id, file, point_radius, pose)");
+            const std::string id = objectId(reader, node, where, ids);
+            const std::string at = where + " '" + id + "'";
+            const YAML::Node fileNode = reader.child(node, "file", at);
+            std::filesystem::path file = reader.string(fileNode, at + ".file");
+            if (file.is_relative())
+                file = std::filesystem::path(reader.source()).parent_path() / file;
+            double radius = 0.0;
+            if (const YAML::Node r = node["point_radius"]; r.IsDefined() && !r.IsNull())
+            {
+                radius = reader.number(r, at + ".point_radius");
+                if (radius < 0.0 || radius > 1e3)
+                    reader.fail(r, at + ".point_radius", "must be in [0, 1000] m, got " + r.Scalar());
+            }
+            Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+            if (const YAML::Node p = node["pose"]; p.IsDefined() && !p.IsNull())
+                pose = reader.pose(p, at + ".pose");
+            PointCloudFileOptions options;
+            if (const YAML::Node d = node["drop_non_finite"]; d.IsDefined() && !d.IsNull())
+            {
+                const std::string text = lower(reader.string(d, at + ".drop_non_finite"));
+                if (text != "true" && text != "false")
+                    reader.fail(d, at + ".drop_non_finite", "expected true or false, got '" + d.Scalar() + "'");
+                options.dropNonFinite = text == "true";
+            }
+            try
+            {
+                env.addPointCloud(id, PointCloud::build(loadPointCloudFile(file.string(), options), float(radius)),
+                                  pose);
+            }
+            catch (const Error &e)
+            {
+                reader.fail(fileNode, at + ".file", e.what());
+            }
+        }
+
         Environment readScene(const Reader &reader, const YAML::Node &root,
                               const std::shared_ptr<const RobotModel> &robot)
         {
@@ -419,6 +474,12 @@ namespace ropras::ompl_ext
                     for (std::size_t i = 0; i < objects.size(); ++i)
                         readCollisionObject(reader, objects[i], "world.collision_objects[" + std::to_string(i) + "]",
                                             ids, env);
+                }
+                if (const YAML::Node clouds = world["point_clouds"]; clouds.IsDefined() && !clouds.IsNull())
+                {
+                    reader.sequence(clouds, "world.point_clouds");
+                    for (std::size_t i = 0; i < clouds.size(); ++i)
+                        readPointCloud(reader, clouds[i], "world.point_clouds[" + std::to_string(i) + "]", ids, env);
                 }
             }
             readAttachedObjects(reader, root, ids, robot, env);
@@ -470,6 +531,8 @@ namespace ropras::ompl_ext
                 if (!request.goal.emplace(name, value).second)
                     reader.fail(joints[i], where, "duplicate joint name '" + name + "'");
             }
+            if (const YAML::Node group = root["group_name"]; group.IsDefined() && !group.IsNull())
+                request.group = reader.string(group, "group_name");
             return request;
         }
     }  // namespace
