@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "RobotSelection.h"
 #include "ropras/ompl_ext/ompl/MotionValidator.h"
 #include "ropras/ompl_ext/scene/Environment.h"
 
@@ -19,6 +20,7 @@ namespace ropras::bin::mbm
         unsigned repeat{1}, seed{1}, limit{0};
         double time{1.0}, resolution{ompl_ext::MotionValidator::DEFAULT_RESOLUTION};
         bool simplify{true}, quiet{false};
+        RobotSelection selection;
     };
 
     /// one planning run: a planner, a checker, a problem and a repetition
@@ -29,6 +31,13 @@ namespace ropras::bin::mbm
         int status{0};  ///< ompl::base::PlannerStatus::StatusType
         bool solved{false};
         double planUs{0}, simplifyUs{0}, length{0}, simplifiedLength{0};
+    };
+
+    /// a problem's two files
+    struct ProblemFiles
+    {
+        std::string category, scene, request;
+        int index{0};
     };
 
     struct Problem

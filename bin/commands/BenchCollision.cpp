@@ -15,6 +15,7 @@
 #include "CommandRegistry.h"
 #include "Median.h"
 #include "OutputChecks.h"
+#include "RobotSelection.h"
 #include "ropras/core/Error.h"
 #include "ropras/core/InputFile.h"
 #include "ropras/core/MemoryLimit.h"
@@ -38,6 +39,7 @@ namespace
         double edgeLength{1.0};
         double resolution{1.0 / 32.0};
         unsigned seed{1};
+        ropras::bin::RobotSelection selection;
     };
 
     using ropras::bin::median;
@@ -126,7 +128,11 @@ namespace
     {
         ropras::bin::refuseOverwritingInputs("--json", a.json, {a.urdf, a.srdf, a.meshUrdf});
         benchClock.emplace(a.clock, "bench-collision");
-        const auto robot = RobotModel::fromUrdfFile(a.urdf, a.srdf);
+        const RobotModel::Options robotOptions = a.selection.options();
+        const auto robot = RobotModel::fromUrdfFile(a.urdf, a.srdf, robotOptions);
+        ropras::bin::Warnings warnings("bench-collision");
+        warnings.add(robot->warnings());
+        warnings.print();
         const CollisionChecker checker(robot, parseBackend(a.backend));
         const std::size_t dof = robot->dof();
         const auto w = static_cast<std::size_t>(checker.width());
@@ -229,7 +235,7 @@ namespace
         std::optional<FclMeshChecker> fclMeshes;
         if (!a.meshUrdf.empty())
         {
-            meshRobot = RobotModel::fromUrdfFile(a.meshUrdf, a.srdf);
+            meshRobot = RobotModel::fromUrdfFile(a.meshUrdf, a.srdf, robotOptions);
             if (meshRobot->dof() != dof)
                 throw Error("bench-collision: --mesh-urdf '" + a.meshUrdf + "' has " +
                             std::to_string(meshRobot->dof()) + " joints, --urdf has " + std::to_string(dof));
@@ -487,6 +493,7 @@ namespace
                        "the same valid configurations with and without them, and the cost of a particle scene")
             ->check(CLI::ExistingFile);
         app.add_option("--seed", args->seed, "random seed")->capture_default_str()->check(ropras::bin::SEED32);
+        args->selection.addOptions(app, false);
         return [args] { return run(*args); };
     }
 

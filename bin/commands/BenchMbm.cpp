@@ -65,9 +65,10 @@ namespace
         return v[lo] + (pos - lo) * (v[hi] - v[lo]);
     }
 
-    std::vector<Problem> loadProblems(const Args &a, const RobotModel &robot)
+    /// the sceneNNNN.yaml / requestNNNN.yaml pairs of the chosen categories, sorted
+    std::vector<ProblemFiles> problemFiles(const Args &a)
     {
-        std::vector<Problem> problems;
+        std::vector<ProblemFiles> files;
         if (!fs::is_directory(a.problems))
             throw Error("--problems " + a.problems + " is not a directory");
         std::vector<std::string> categories = a.categories;
@@ -96,20 +97,56 @@ namespace
                 scenes.resize(a.limit);
             for (const fs::path &scene : scenes)
             {
-                Problem p;
-                p.category = category;
-                p.index = std::stoi(scene.stem().string().substr(5));
-                const fs::path request = dir / ("request" + scene.stem().string().substr(5) + ".yaml");
-                p.env = std::make_shared<const Environment>(loadPlanningScene(scene.string()));
-                const MotionPlanRequest r = loadMotionPlanRequest(request.string());
-                p.start = robot.planningValues(r.start, request.string() + ": start state");
-                p.goal = robot.planningValues(r.goal, request.string() + ": goal");
-                p.request = request.string();
-                problems.push_back(std::move(p));
+                const std::string number = scene.stem().string().substr(5);
+                files.push_back(
+                    {category, scene.string(), (dir / ("request" + number + ".yaml")).string(), std::stoi(number)});
             }
         }
-        if (problems.empty())
+        if (files.empty())
             throw Error("no sceneNNNN.yaml problems under " + a.problems);
+        return files;
+    }
+
+    /** Why the request's start state holds a joint that is not planned elsewhere than \a robot does (one model
+        serves every problem: its held values come from the first request), "" when it agrees. */
+    std::string heldJointMismatch(const RobotModel &robot, const MotionPlanRequest &r, const std::string &firstRequest)
+    {
+        for (const UrdfJoint &j : robot.urdfJoints())
+        {
+            const auto it = r.start.find(j.name);
+            if (j.type == JointType::Fixed || j.variable >= 0 || it == r.start.end() ||
+                std::abs(it->second - j.heldValue) <= robot.limitTolerance())
+                continue;
+            std::ostringstream why;
+            why << "the start state holds joint '" << j.name << "' at " << it->second << ", the robot model at "
+                << j.heldValue << " (the value in " << firstRequest
+                << "): bench-mbm holds the joints it does not plan as the first request does";
+            return why.str();
+        }
+        return "";
+    }
+
+    std::vector<Problem> loadProblems(const std::vector<ProblemFiles> &files, const RobotModel &robot,
+                                      ropras::bin::Warnings &warnings)
+    {
+        std::vector<Problem> problems;
+        for (const ProblemFiles &f : files)
+        {
+            Problem p;
+            p.category = f.category;
+            p.index = f.index;
+            p.env = std::make_shared<const Environment>(loadPlanningScene(f.scene));
+            const MotionPlanRequest r = loadMotionPlanRequest(f.request);
+            std::vector<std::string> messages;
+            p.start = robot.planningValues(r.start, f.request + ": start state", &messages);
+            p.goal = robot.planningValues(r.goal, f.request + ": goal", &messages);
+            warnings.add(f.request, messages);
+            p.request = f.request;
+            const std::string mismatch = heldJointMismatch(robot, r, files.front().request);
+            if (!mismatch.empty())
+                p.invalid = f.request + ": " + mismatch;
+            problems.push_back(std::move(p));
+        }
         return problems;
     }
 
@@ -337,10 +374,16 @@ namespace
         ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
         ompl::RNG::setSeed(a.seed);
         const auto params = ropras::bin::keyValueOptions(a.params, "--param");
-        auto robot = RobotModel::fromUrdfFile(a.urdf, a.srdf);
+        const std::vector<ProblemFiles> files = problemFiles(a);
+        // the first request's group and start state choose the planned and the held joints for every problem
+        const MotionPlanRequest firstRequest = loadMotionPlanRequest(files.front().request);
+        const RobotModel::Options robotOptions = a.selection.options(&firstRequest);
+        auto robot = RobotModel::fromUrdfFile(a.urdf, a.srdf, robotOptions);
+        ropras::bin::Warnings warnings("bench-mbm");
+        warnings.add(robot->warnings());
         std::shared_ptr<const RobotModel> meshRobot;
         if (!a.meshUrdf.empty())
-            meshRobot = RobotModel::fromUrdfFile(a.meshUrdf, a.srdf);
+            meshRobot = RobotModel::fromUrdfFile(a.meshUrdf, a.srdf, robotOptions);
         std::vector<std::string> checkers = a.checkers;
         if (checkers.empty())
             checkers = meshRobot ? std::vector<std::string>{"ropras", "fcl_sphere", "fcl_mesh"}
@@ -362,7 +405,8 @@ namespace
             throw Error("--mesh-urdf " + a.meshUrdf + " has " + std::to_string(meshRobot->dof()) +
                         " planning joints, --urdf has " + std::to_string(robot->dof()));
 
-        std::vector<Problem> problems = loadProblems(a, *robot);
+        std::vector<Problem> problems = loadProblems(files, *robot, warnings);
+        warnings.print();
         auto checker = std::make_shared<const CollisionChecker>(robot);
         auto fclSphere = std::make_shared<FclSphereChecker>(robot);
         std::shared_ptr<FclMeshChecker> fclMesh = meshRobot ? std::make_shared<FclMeshChecker>(meshRobot) : nullptr;
@@ -381,7 +425,8 @@ namespace
             valid += p.invalid.empty() ? 1 : 0;
         }
         std::cout << "bench-mbm: " << problems.size() << " problems (" << problems.size() - valid << " invalid), robot "
-                  << robot->name() << " (" << robot->dof() << " joints, " << robot->spheres().size()
+                  << robot->name() << " (" << robot->dof() << " joints"
+                  << (robot->group().empty() ? "" : ", group " + robot->group()) << ", " << robot->spheres().size()
                   << " spheres), checkers";
         for (const auto &c : checkers)
             std::cout << ' ' << c;
@@ -491,6 +536,7 @@ namespace
         app.add_option("--json", a->json, "write the results as JSON");
         app.add_option("--ompl-log", a->omplLog, "write an OMPL benchmark log (ompl_benchmark_statistics)");
         app.add_flag("--quiet", a->quiet, "no progress output on standard error");
+        a->selection.addOptions(app, true);
         return [a] { return run(*a); };
     }
 

@@ -12,6 +12,7 @@
 
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
+#include "RobotSelection.h"
 #include "ropras/core/Error.h"
 #include "ropras/core/InputFile.h"
 #include "ropras/ompl_ext/collision/CrossCheck.h"
@@ -29,7 +30,7 @@ namespace
     struct Args
     {
         std::string urdf, srdf, scenes, meshUrdf;
-        std::vector<std::string> joints;
+        ropras::bin::RobotSelection selection;
         std::size_t samples{10000};
         std::size_t meshSamples{0};
         std::uint64_t seed{1};
@@ -159,9 +160,11 @@ namespace
     int run(const Args &args)
     {
         const auto start = std::chrono::steady_clock::now();
-        RobotModel::Options options;
-        options.planningJoints = args.joints;
+        const RobotModel::Options options = args.selection.options();
         const auto robot = RobotModel::fromUrdfFile(args.urdf, args.srdf, options);
+        ropras::bin::Warnings warnings("check-collision");
+        warnings.add(robot->warnings());
+        warnings.print();
         std::size_t skipped = 0;
         std::vector<CrossCheckScene> scenes = loadScenes(args.scenes, skipped);
         const std::size_t sceneFiles = scenes.size();
@@ -260,8 +263,7 @@ namespace
             ->required()
             ->check(CLI::ExistingFile);
         app.add_option("--srdf", a->srdf, "SRDF (disabled self-collision pairs)")->check(CLI::ExistingFile);
-        app.add_option("--joints", a->joints, "planning joints, comma separated (default: all movable joints)")
-            ->delimiter(',');
+        a->selection.addOptions(app, false);
         app.add_option("--scenes", a->scenes, "a MoveIt PlanningScene YAML, or a folder searched recursively")
             ->required();
         // checked a chunk at a time (memory does not grow with the count); time does, about 10 us per sample

@@ -11,6 +11,7 @@
 #include "ArgumentChecks.h"
 #include "CommandRegistry.h"
 #include "OutputChecks.h"
+#include "RobotSelection.h"
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/collision/StateDiagnosis.h"
 #include "ropras/ompl_ext/ompl/PlannerRegistry.h"
@@ -26,6 +27,7 @@ namespace
     {
         std::string urdf, srdf, scene, request, planner{"RRTConnect"}, out;
         std::vector<std::string> params;
+        ropras::bin::RobotSelection selection;
         double time{1.0};
         double resolution{MotionValidator::DEFAULT_RESOLUTION};
         bool simplify{false};
@@ -42,10 +44,13 @@ namespace
         ropras::bin::refuseOverwritingInputs("--out", a.out, {a.urdf, a.srdf, a.scene, a.request});
         ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
         ompl::RNG::setSeed(a.seed);
-        // the robot first: the scene may attach objects to its links (robot_state.attached_collision_objects)
-        const auto robotModel = RobotModel::fromUrdfFile(a.urdf, a.srdf);
-        auto environment = std::make_shared<Environment>(loadPlanningScene(a.scene, robotModel));
+        // the request first (its group and start state choose the planned and held joints), then the robot: the
+        // scene may attach objects to its links (robot_state.attached_collision_objects)
         const MotionPlanRequest request = loadMotionPlanRequest(a.request);
+        const auto robotModel = RobotModel::fromUrdfFile(a.urdf, a.srdf, a.selection.options(&request));
+        ropras::bin::Warnings warnings("plan");
+        warnings.add(robotModel->warnings());
+        auto environment = std::make_shared<Environment>(loadPlanningScene(a.scene, robotModel));
         PlanningContextOptions options;
         options.planner = a.planner;
         options.plannerParams = ropras::bin::keyValueOptions(a.params, "--param");
@@ -55,8 +60,11 @@ namespace
         auto &ss = *context.setup;
 
         ompl::base::ScopedState<> start(ss.getStateSpace()), goal(ss.getStateSpace());
-        context.setState(start.get(), request.start, a.request + ": start state");
-        context.setState(goal.get(), request.goal, a.request + ": goal");
+        std::vector<std::string> valueWarnings;
+        context.setState(start.get(), request.start, a.request + ": start state", &valueWarnings);
+        context.setState(goal.get(), request.goal, a.request + ": goal", &valueWarnings);
+        warnings.add(valueWarnings);
+        warnings.print();
         for (const auto &[what, state] : {std::pair{"start state", start.get()}, std::pair{"goal", goal.get()}})
         {
             const double *q = state->as<ompl::base::RealVectorStateSpace::StateType>()->values;
@@ -71,7 +79,8 @@ namespace
         const ompl::base::PlannerStatus status = ss.solve(ompl::base::timedPlannerTerminationCondition(a.time));
         const double planUs = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
         const bool solved = status == ompl::base::PlannerStatus::EXACT_SOLUTION;
-        std::cout << "robot " << robot.name() << " (" << robot.dof() << " joints, " << robot.spheres().size()
+        std::cout << "robot " << robot.name() << " (" << robot.dof() << " joints"
+                  << (robot.group().empty() ? "" : ", group " + robot.group()) << ", " << robot.spheres().size()
                   << " spheres), scene " << a.scene << " (" << environment->objectCount() << " objects)\n"
                   << "planner " << ss.getPlanner()->getName() << ": " << status.asString() << " in " << std::fixed
                   << std::setprecision(1) << planUs << " us\n";
@@ -131,6 +140,7 @@ namespace
         app.add_flag("--simplify", args->simplify, "simplify the path (OMPL's simplifySolution)");
         app.add_option("--out", args->out, "write the joint-space path as CSV");
         app.add_option("--seed", args->seed, "OMPL random seed")->capture_default_str()->check(ropras::bin::SEED32);
+        args->selection.addOptions(app, true);
         return [args] { return run(*args); };
     }
 

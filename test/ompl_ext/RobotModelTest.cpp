@@ -495,7 +495,9 @@ TEST(RobotModel, BadFilesNameTheFile)
     expectErrorMentions([&] { RobotModel::fromUrdfFile(good, badSrdf); }, {badSrdf, "malformed"});
     const std::string unknownLink = writeTemp(
         "unknown_link.srdf", "<robot name=\"testarm\"><disable_collisions link1=\"l1\" link2=\"elbow\"/></robot>");
-    expectErrorMentions([&] { RobotModel::fromUrdfFile(good, unknownLink); }, {unknownLink, "elbow"});
+    RobotModel::Options strict;
+    strict.strict = true;  // MoveIt's warning is an error (the lenient default: OtherProjectFilesTest.cpp)
+    expectErrorMentions([&] { RobotModel::fromUrdfFile(good, unknownLink, strict); }, {unknownLink, "elbow"});
     const std::string okSrdf =
         writeTemp("ok.srdf",
                   "<robot name=\"testarm\"><disable_collisions link1=\"base\" link2=\"l4\" reason=\"Never\"/></robot>");

@@ -21,6 +21,8 @@
 #include <unordered_set>
 
 #include "model/EnclosingSphere.h"
+#include "model/JointValues.h"
+#include "model/SrdfGroups.h"
 #include "model/SrdfReader.h"
 #include "model/UrdfSanity.h"
 #include "ropras/core/Error.h"
@@ -97,6 +99,17 @@ namespace ropras::ompl_ext
         std::shared_ptr<const RobotModel> build(const std::string &urdfXml, const std::string &srdfXml)
         {
             checkBasePose();
+            if (!std::isfinite(options_.limitTolerance) || options_.limitTolerance < 0.0)
+                throw Error("RobotModel::Options::limitTolerance " + fmt(options_.limitTolerance) +
+                            " must be finite and >= 0");
+            model_->limitTolerance_ = options_.limitTolerance;
+            model_->strict_ = options_.strict;
+            hasSrdf_ = !srdfXml.empty();
+            if (hasSrdf_)
+            {
+                srdf_ = readSrdf(srdfXml, srdfName_);
+                model_->warnings_ = srdf_.warnings;
+            }
             readDocumentOrder(urdfXml);
             urdf::ModelInterfaceSharedPtr urdf = urdf::parseURDF(urdfXml);
             if (!urdf || !urdf->getRoot())
@@ -110,7 +123,7 @@ namespace ropras::ompl_ext
             choosePlanningJoints(*urdf);
             compileFrames();
             buildCollisionGeometry(*urdf);
-            buildSelfPairs(srdfXml);
+            buildSelfPairs();
             findAlwaysAndDefaultPairs();
             return model_;
         }
@@ -403,7 +416,8 @@ namespace ropras::ompl_ext
                 }
             }
 
-            std::vector<std::string> chosen = options_.planningJoints.empty() ? candidates : options_.planningJoints;
+            resolveGroups(candidates);
+            std::vector<std::string> chosen = chosenJoints(candidates);
             std::set<std::string> seen;
             for (const std::string &name : chosen)
             {
@@ -428,14 +442,86 @@ namespace ropras::ompl_ext
                 joints[idx].variable = static_cast<int>(model_->joints_.size());
                 model_->joints_.push_back(pj);
             }
+            holdJoints(lower, upper, findJoint);
+        }
 
-            // held joints: default 0 clamped into the limits, or the value given
+        /// model_->groups_: every SRDF group that resolves (a group that does not is a warning, or with
+        /// Options::strict an error)
+        void resolveGroups(const std::vector<std::string> &candidates)
+        {
+            for (const SrdfGroup &group : srdf_.groups)
+            {
+                try
+                {
+                    std::vector<std::string> &movable = model_->groups_[group.name];
+                    for (const int j :
+                         srdfGroupJoints(srdf_, group.name, model_->links_, model_->urdfJoints_, srdfName_))
+                    {
+                        const std::string &name = model_->urdfJoints_[j].name;
+                        if (std::find(candidates.begin(), candidates.end(), name) != candidates.end())
+                            movable.push_back(name);
+                    }
+                }
+                catch (const Error &e)
+                {
+                    model_->groups_.erase(group.name);
+                    if (options_.strict || group.name == options_.group)
+                        throw;
+                    model_->warnings_.push_back(std::string(e.what()) + "; the group is skipped");
+                }
+            }
+        }
+
+        /// the planning joints by name: Options::planningJoints, Options::group's, or every candidate
+        std::vector<std::string> chosenJoints(const std::vector<std::string> &candidates)
+        {
+            std::string group = options_.group;
+            if (group.empty() && options_.planningJoints.empty() && model_->groups_.count(options_.requestGroup))
+                group = options_.requestGroup;
+            if (group.empty())
+                return options_.planningJoints.empty() ? candidates : options_.planningJoints;
+            if (!options_.planningJoints.empty())
+                fail("give the planning joints or a planning group ('" + group + "'), not both");
+            if (srdf_.groups.empty())
+                fail("planning group '" + group + "' needs an SRDF that defines groups" +
+                     (hasSrdf_ ? " ('" + srdfName_ + "' defines none)" : std::string(" (no SRDF given)")));
+            if (model_->groups_.count(group) == 0)  // not defined: the resolver's message lists the groups
+                srdfGroupJoints(srdf_, group, model_->links_, model_->urdfJoints_, srdfName_);
+            const std::vector<std::string> &joints = model_->groups_.at(group);
+            if (joints.empty())
+                fail("planning group '" + group + "' of SRDF '" + srdfName_ + "' has no movable joint");
+            model_->group_ = group;
+            return joints;
+        }
+
+        /// held joints: default 0 clamped into the limits, Options::jointState's value, or Options::heldJointValues'
+        template <typename FindJoint>
+        void holdJoints(const std::vector<double> &lower, const std::vector<double> &upper, const FindJoint &findJoint)
+        {
+            auto &joints = model_->urdfJoints_;
             for (std::size_t i = 0; i < joints.size(); ++i)
             {
                 if (joints[i].type != JointType::Fixed && joints[i].variable < 0)
                 {
                     joints[i].heldValue = std::clamp(0.0, lower[i], upper[i]);
                 }
+            }
+            std::vector<std::string> unknown;
+            for (const auto &[name, value] : options_.jointState)
+            {
+                const int idx = findJoint(name);
+                if (idx < 0)
+                    unknown.push_back(name);
+                else if (joints[idx].type != JointType::Fixed && joints[idx].variable < 0 &&
+                         options_.heldJointValues.count(name) == 0)
+                    holdJoint(idx, value, lower[idx], upper[idx], "the joint state's");
+            }
+            if (!unknown.empty())
+            {
+                const std::string what = "the joint state names joints the URDF does not have: " + joinNames(unknown);
+                if (options_.strict)
+                    fail(what);
+                model_->warnings_.push_back("URDF '" + urdfName_ + "': " + what + "; they are ignored");
             }
             for (const auto &[name, value] : options_.heldJointValues)
             {
@@ -460,16 +546,30 @@ namespace ropras::ompl_ext
                 {
                     fail("held joint '" + name + "' is a planning joint; give values only for joints not planned");
                 }
-                const bool inLimits = joints[idx].type == JointType::Continuous
-                                          ? std::isfinite(value)
-                                          : (std::isfinite(value) && value >= lower[idx] && value <= upper[idx]);
-                if (!inLimits)
-                {
-                    fail("held joint '" + name + "' value " + fmt(value) + " is outside its limits [" +
-                         fmt(lower[idx]) + ", " + fmt(upper[idx]) + "]");
-                }
-                joints[idx].heldValue = value;
+                holdJoint(idx, value, lower[idx], upper[idx], "held joint");
             }
+        }
+
+        /// holds URDF joint \a idx at \a value, clamped within Options::limitTolerance (unless strict)
+        void holdJoint(int idx, double value, double lower, double upper, const std::string &what)
+        {
+            UrdfJoint &joint = model_->urdfJoints_[idx];
+            if (!options_.strict)
+            {
+                const std::string warning =
+                    fitJointValue(joint.name, joint.type, lower, upper, options_.limitTolerance, value);
+                if (!warning.empty())
+                    model_->warnings_.push_back("URDF '" + urdfName_ + "': held " + warning);
+            }
+            const bool inLimits = joint.type == JointType::Continuous
+                                      ? std::isfinite(value)
+                                      : (std::isfinite(value) && value >= lower && value <= upper);
+            if (!inLimits)
+            {
+                fail(what + " '" + joint.name + "' value " + fmt(value) + " is outside its limits [" + fmt(lower) +
+                     ", " + fmt(upper) + "]");
+            }
+            joint.heldValue = value;
         }
 
         // Fold fixed and held joints into the parent frame; every planned joint opens a frame that moves about
@@ -673,7 +773,7 @@ namespace ropras::ompl_ext
         // minus adjacent links. Two links are adjacent when the tree path between them has at most one non-fixed
         // joint and every link strictly inside the path has no collision geometry (MoveIt's rule of
         // bridging geometry-less links).
-        void buildSelfPairs(const std::string &srdfXml)
+        void buildSelfPairs()
         {
             const auto &links = model_->links_;
             std::vector<int> collisionOf(links.size(), -1);
@@ -691,22 +791,31 @@ namespace ropras::ompl_ext
             {
                 linkIndex.emplace(links[i].name, static_cast<int>(i));
             }
-            if (!srdfXml.empty())
+            std::map<std::string, std::string> unknownLines;  // unknown link -> the lines naming it
+            std::vector<std::string> unknownOrder;
+            for (const SrdfDisabledPair &pair : srdf_.disabledPairs)
             {
-                std::vector<std::string> names;
-                for (const Link &l : links)
+                const auto ia = linkIndex.find(pair.link1), ib = linkIndex.find(pair.link2);
+                if (ia != linkIndex.end() && ib != linkIndex.end())
                 {
-                    names.push_back(l.name);
+                    skipped.insert(key(ia->second, ib->second));
+                    continue;
                 }
-                for (const auto &[a, b] : readSrdfDisabledPairs(srdfXml, srdfName_, names))
-                {
-                    const auto ia = linkIndex.find(a), ib = linkIndex.find(b);
-                    if (ia != linkIndex.end() && ib != linkIndex.end())  // the reader rejects unknown names
-                    {
-                        skipped.insert(key(ia->second, ib->second));
-                    }
-                }
+                const std::string &link = ia == linkIndex.end() ? pair.link1 : pair.link2;
+                if (options_.strict)
+                    throw Error("SRDF '" + srdfName_ + "': <disable_collisions> on line " + std::to_string(pair.line) +
+                                " names link '" + link + "', which the URDF does not define");
+                std::string &lines = unknownLines[link];
+                if (lines.empty())
+                    unknownOrder.push_back(link);
+                lines += (lines.empty() ? "" : ", ") + std::to_string(pair.line);
             }
+            // MoveIt warns and skips such entries: one SRDF often serves several variants of a robot
+            for (const std::string &link : unknownOrder)
+                model_->warnings_.push_back("SRDF '" + srdfName_ + "': <disable_collisions> on line" +
+                                            (unknownLines[link].find(',') == std::string::npos ? " " : "s ") +
+                                            unknownLines[link] + " names link '" + link +
+                                            "', which the URDF does not define; skipped");
             for (const auto &[a, b] : options_.disabledPairs)
             {
                 const auto ia = linkIndex.find(a), ib = linkIndex.find(b);
@@ -875,6 +984,8 @@ namespace ropras::ompl_ext
         std::shared_ptr<RobotModel> model_;
         std::string urdfName_, srdfName_;
         const RobotModel::Options &options_;
+        SrdfDocument srdf_;
+        bool hasSrdf_{false};
         std::vector<std::string> jointOrder_;
         std::map<std::string, int> collisionCount_;
     };
@@ -903,13 +1014,19 @@ namespace ropras::ompl_ext
     }
 
     std::vector<double> RobotModel::planningValues(const std::map<std::string, double> &jointValues,
-                                                   const std::string &context) const
+                                                   const std::string &context, std::vector<std::string> *warnings) const
     {
+        std::vector<std::string> unknown;
         for (const auto &entry : jointValues)
             if (std::none_of(urdfJoints_.begin(), urdfJoints_.end(),
                              [&](const UrdfJoint &j) { return j.name == entry.first; }))
-                throw Error(context + ": names joint '" + entry.first + "', which robot '" + name_ + "' (" + source_ +
-                            ") does not have");
+                unknown.push_back(entry.first);
+        if (strict_ && !unknown.empty())
+            throw Error(context + ": names joint '" + unknown.front() + "', which robot '" + name_ + "' (" + source_ +
+                        ") does not have");
+        if (!unknown.empty() && warnings)  // MoveIt ignores joints outside the planning group
+            warnings->push_back(context + ": names joints robot '" + name_ + "' (" + source_ +
+                                ") does not have, ignored: " + joinNames(unknown));
         std::vector<double> q(joints_.size());
         for (std::size_t i = 0; i < joints_.size(); ++i)
         {
@@ -917,6 +1034,12 @@ namespace ropras::ompl_ext
             if (it == jointValues.end())
                 throw Error(context + ": does not give planning joint '" + joints_[i].name + "'");
             q[i] = it->second;
+            if (strict_)
+                continue;
+            const PlanningJoint &j = joints_[i];
+            const std::string warning = fitJointValue(j.name, j.type, j.lower, j.upper, limitTolerance_, q[i]);
+            if (!warning.empty() && warnings)
+                warnings->push_back(context + ": " + warning);
         }
         return q;
     }

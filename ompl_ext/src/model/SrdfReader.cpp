@@ -2,51 +2,79 @@
 
 #include <tinyxml2.h>
 
+#include <set>
 #include <string>
-#include <unordered_set>
 
 #include "ropras/core/Error.h"
 
 namespace ropras::ompl_ext
 {
-    std::vector<std::pair<std::string, std::string>> readSrdfDisabledPairs(const std::string &srdfXml,
-                                                                           const std::string &sourceName,
-                                                                           const std::vector<std::string> &knownLinks)
+    namespace
+    {
+        /// the attribute \a name of \a e, which must be there
+        std::string attribute(const tinyxml2::XMLElement *e, const char *name, const std::string &sourceName)
+        {
+            const char *value = e->Attribute(name);
+            if (value == nullptr)
+                throw Error("SRDF '" + sourceName + "': <" + e->Name() + "> on line " +
+                            std::to_string(e->GetLineNum()) + " lacks the " + name + " attribute");
+            return value;
+        }
+
+        SrdfGroup readGroup(const tinyxml2::XMLElement *e, const std::string &sourceName,
+                            std::vector<std::string> &warnings)
+        {
+            SrdfGroup group;
+            group.name = attribute(e, "name", sourceName);
+            group.line = e->GetLineNum();
+            for (const tinyxml2::XMLElement *c = e->FirstChildElement(); c != nullptr; c = c->NextSiblingElement())
+            {
+                const std::string tag = c->Name();
+                if (tag == "joint")
+                    group.joints.push_back(attribute(c, "name", sourceName));
+                else if (tag == "link")
+                    group.links.push_back(attribute(c, "name", sourceName));
+                else if (tag == "group")
+                    group.subgroups.push_back(attribute(c, "name", sourceName));
+                else if (tag == "chain")
+                    group.chains.emplace_back(attribute(c, "base_link", sourceName),
+                                              attribute(c, "tip_link", sourceName));
+                else  // srdfdom reads only the four members and skips the rest
+                    warnings.push_back("SRDF '" + sourceName + "': line " + std::to_string(c->GetLineNum()) + ": <" +
+                                       tag + "> in <group name=\"" + group.name +
+                                       "\"> skipped (a group holds joint, link, chain and group elements)");
+            }
+            return group;
+        }
+    }  // namespace
+
+    SrdfDocument readSrdf(const std::string &srdfXml, const std::string &sourceName)
     {
         tinyxml2::XMLDocument doc;
         if (doc.Parse(srdfXml.c_str(), srdfXml.size()) != tinyxml2::XML_SUCCESS)
-        {
             throw Error("SRDF '" + sourceName + "': malformed XML: " + (doc.ErrorStr() ? doc.ErrorStr() : "?"));
-        }
         const tinyxml2::XMLElement *robot = doc.RootElement();
         if (robot == nullptr || std::string(robot->Name()) != "robot")
-        {
             throw Error("SRDF '" + sourceName + "': the root element must be <robot>");
-        }
-        const std::unordered_set<std::string> names(knownLinks.begin(), knownLinks.end());  // O(1) per lookup
-        auto known = [&](const char *name) { return names.count(name) != 0; };
-        std::vector<std::pair<std::string, std::string>> pairs;
+        SrdfDocument out;
         for (const tinyxml2::XMLElement *e = robot->FirstChildElement("disable_collisions"); e != nullptr;
              e = e->NextSiblingElement("disable_collisions"))
         {
-            const char *a = e->Attribute("link1");
-            const char *b = e->Attribute("link2");
-            if (a == nullptr || b == nullptr)
-            {
+            if (e->Attribute("link1") == nullptr || e->Attribute("link2") == nullptr)
                 throw Error("SRDF '" + sourceName + "': <disable_collisions> on line " +
                             std::to_string(e->GetLineNum()) + " lacks the link1 or link2 attribute");
-            }
-            for (const char *name : {a, b})
-            {
-                if (!known(name))
-                {
-                    throw Error("SRDF '" + sourceName + "': <disable_collisions> on line " +
-                                std::to_string(e->GetLineNum()) + " names link '" + name +
-                                "', which the URDF does not define");
-                }
-            }
-            pairs.emplace_back(a, b);
+            out.disabledPairs.push_back({e->Attribute("link1"), e->Attribute("link2"), e->GetLineNum()});
         }
-        return pairs;
+        std::set<std::string> names;
+        for (const tinyxml2::XMLElement *e = robot->FirstChildElement("group"); e != nullptr;
+             e = e->NextSiblingElement("group"))
+        {
+            SrdfGroup group = readGroup(e, sourceName, out.warnings);
+            if (!names.insert(group.name).second)
+                throw Error("SRDF '" + sourceName + "': <group name=\"" + group.name + "\"> on line " +
+                            std::to_string(group.line) + " is defined twice");
+            out.groups.push_back(std::move(group));
+        }
+        return out;
     }
 }  // namespace ropras::ompl_ext

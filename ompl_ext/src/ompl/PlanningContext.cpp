@@ -31,9 +31,9 @@ namespace ropras::ompl_ext
     }
 
     void PlanningContext::setState(ompl::base::State *state, const std::map<std::string, double> &jointValues,
-                                   const std::string &context) const
+                                   const std::string &context, std::vector<std::string> *warnings) const
     {
-        const std::vector<double> q = robot->planningValues(jointValues, context);
+        const std::vector<double> q = robot->planningValues(jointValues, context, warnings);
         std::copy(q.begin(), q.end(), state->as<ompl::base::RealVectorStateSpace::StateType>()->values);
     }
 

@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <set>
 #include <sstream>
 #include <vector>
 
 #include "ropras/core/Error.h"
 #include "ropras/core/InputFile.h"
+#include "ropras/ompl_ext/scene/PointCloud.h"
+#include "ropras/ompl_ext/scene/PointCloudFile.h"
 #include "scene/YamlTree.h"
 
 namespace ropras::ompl_ext
@@ -218,12 +221,10 @@ namespace ropras::ompl_ext
             return shapes;
         }
 
-        void readCollisionObject(const Reader &reader, const YamlNode &node, const std::string &where,
-                                 std::set<std::string> &ids, Environment &env)
+        /// the object's id (node.id: non-empty, unique in \a ids)
+        std::string objectId(const Reader &reader, const YamlNode &node, const std::string &where,
+                             std::set<std::string> &ids)
         {
-            if (!node.isMap())
-                reader.fail(node, where,
-                            "expected a collision object (a mapping with id, primitives, primitive_poses)");
             const YamlNode idNode = reader.child(node, "id", where);
             const std::string id = reader.string(idNode, where + ".id");
             if (id.empty())
@@ -231,6 +232,17 @@ namespace ropras::ompl_ext
             const std::string at = where + " '" + id + "'";
             if (!ids.insert(id).second)
                 reader.fail(idNode, at, "duplicate object id '" + id + "'");
+            return id;
+        }
+
+        void readCollisionObject(const Reader &reader, const YamlNode &node, const std::string &where,
+                                 std::set<std::string> &ids, Environment &env)
+        {
+            if (!node.isMap())
+                reader.fail(node, where,
+                            "expected a collision object (a mapping with id, primitives, primitive_poses)");
+            const std::string id = objectId(reader, node, where, ids);
+            const std::string at = where + " '" + id + "'";
 
             if (const YamlNode op = node["operation"]; op.isDefined() && !op.isNull())
             {
@@ -336,6 +348,49 @@ namespace ropras::ompl_ext
                                    env);
         }
 
+        /** world.point_clouds[i] (a ropras extension: MoveIt scenes carry no point cloud files): id, file (PCD or
+            PLY, relative to the scene file's folder), point_radius (m, default 0), pose (the sensor's, default
+            identity), drop_non_finite (default false) */
+        void readPointCloud(const Reader &reader, const YamlNode &node, const std::string &where,
+                            std::set<std::string> &ids, Environment &env)
+        {
+            if (!node.isMap())
+                reader.fail(node, where, "expected a point cloud (a mapping with id, file, point_radius, pose)");
+            const std::string id = objectId(reader, node, where, ids);
+            const std::string at = where + " '" + id + "'";
+            const YamlNode fileNode = reader.child(node, "file", at);
+            std::filesystem::path file = reader.string(fileNode, at + ".file");
+            if (file.is_relative())
+                file = std::filesystem::path(reader.source()).parent_path() / file;
+            double radius = 0.0;
+            if (const YamlNode r = node["point_radius"]; r.isDefined() && !r.isNull())
+            {
+                radius = reader.number(r, at + ".point_radius");
+                if (radius < 0.0 || radius > 1e3)
+                    reader.fail(r, at + ".point_radius", "must be in [0, 1000] m, got " + r.scalar());
+            }
+            Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+            if (const YamlNode p = node["pose"]; p.isDefined() && !p.isNull())
+                pose = reader.pose(p, at + ".pose");
+            PointCloudFileOptions options;
+            if (const YamlNode d = node["drop_non_finite"]; d.isDefined() && !d.isNull())
+            {
+                const std::string text = lower(reader.string(d, at + ".drop_non_finite"));
+                if (text != "true" && text != "false")
+                    reader.fail(d, at + ".drop_non_finite", "expected true or false, got '" + d.scalar() + "'");
+                options.dropNonFinite = text == "true";
+            }
+            try
+            {
+                env.addPointCloud(id, PointCloud::build(loadPointCloudFile(file.string(), options), float(radius)),
+                                  pose);
+            }
+            catch (const Error &e)
+            {
+                reader.fail(fileNode, at + ".file", e.what());
+            }
+        }
+
         /** \brief The scene of \a yaml: each object of world.collision_objects is read (and added to the
             environment) as soon as the parser has passed it, then dropped from the tree; the rest of the document is
             checked when it has been read. */
@@ -364,6 +419,12 @@ namespace ropras::ompl_ext
                     for (std::size_t i = 0; i < objects.size(); ++i)
                         if (!objects[i].isReleased())  // every item is read while parsing; kept for safety
                             readObject(objects[i], i);
+                }
+                if (const YamlNode clouds = world["point_clouds"]; clouds.isDefined() && !clouds.isNull())
+                {
+                    reader.sequence(clouds, "world.point_clouds");
+                    for (std::size_t i = 0; i < clouds.size(); ++i)
+                        readPointCloud(reader, clouds[i], "world.point_clouds[" + std::to_string(i) + "]", ids, env);
                 }
             }
             readAttachedObjects(reader, root, ids, robot, env);
@@ -414,6 +475,8 @@ namespace ropras::ompl_ext
                 if (!request.goal.emplace(name, value).second)
                     reader.fail(joints[i], where, "duplicate joint name '" + name + "'");
             }
+            if (const YamlNode group = root["group_name"]; group.isDefined() && !group.isNull())
+                request.group = reader.string(group, "group_name");
             return request;
         }
     }  // namespace

@@ -136,6 +136,22 @@ namespace ropras::ompl_ext
         std::uint64_t alwaysCollidingSeed{20240601};
         /// more pairs to disable, by link name, exactly as if listed in the SRDF's disable_collisions
         std::vector<std::pair<std::string, std::string>> disabledPairs;
+        /// an SRDF `<group>` whose movable joints are planned (MoveIt's planning group); not with planningJoints
+        std::string group;
+        /** \brief The group a request names (MotionPlanRequest::group): planned like \a group when the SRDF defines
+            it and neither \a group nor \a planningJoints is given; otherwise every movable joint is planned. */
+        std::string requestGroup;
+        /** \brief A whole joint state (e.g. a request's start state): the held value of every movable joint that is
+            not planned, unless heldJointValues gives one. Its planning joints are ignored; names the URDF lacks are
+            ignored with a warning (an error when \a strict). */
+        std::map<std::string, double> jointState;
+        /// joint values at most this far outside a limit (rad or m) are clamped into it with a warning
+        double limitTolerance{DEFAULT_LIMIT_TOLERANCE};
+        /** \brief Refuse what MoveIt accepts with a warning: SRDF names the URDF lacks (disable_collisions, groups),
+            request joints the robot lacks, values outside a limit (no clamping, no wrapping). */
+        bool strict{false};
+
+        static constexpr double DEFAULT_LIMIT_TOLERANCE = 1e-4;
     };
 
     /** \brief Immutable robot description for collision checking, loaded from URDF (+ SRDF) at run time.
@@ -192,10 +208,21 @@ namespace ropras::ompl_ext
         bool withinBounds(const double *q) const noexcept;
         /** \brief The planning-joint values (dof(), in planning order) from a name -> value map such as a MoveIt
             request's start state or goal. Joints of the URDF that are not planned are ignored (they stay held);
-            a name the URDF does not have, or a planning joint the map does not give, throws Error naming
-            \a context (e.g. "request0001.yaml: goal"). */
-        std::vector<double> planningValues(const std::map<std::string, double> &jointValues,
-                                           const std::string &context) const;
+            a planning joint the map does not give throws Error naming \a context (e.g. "request0001.yaml: goal").
+            As MoveIt does (unless the model is strict(), when they are errors or left as given): names the URDF
+            does not have are ignored, values within limitTolerance() outside a limit are clamped and continuous
+            joints are wrapped into [-pi, pi], each with a message appended to \a warnings (when given). */
+        std::vector<double> planningValues(const std::map<std::string, double> &jointValues, const std::string &context,
+                                           std::vector<std::string> *warnings = nullptr) const;
+
+        /// what loading accepted with a warning (SRDF names the URDF lacks, clamped held values, ...), in order
+        const std::vector<std::string> &warnings() const { return warnings_; }
+        /// the SRDF's groups that resolve on this URDF: name -> their movable, non-mimic joints in URDF order
+        const std::map<std::string, std::vector<std::string>> &groups() const { return groups_; }
+        /// the SRDF group whose joints are planned ("" when the planning joints were not chosen by group)
+        const std::string &group() const { return group_; }
+        double limitTolerance() const { return limitTolerance_; }
+        bool strict() const { return strict_; }
 
         // Reference computations in double precision. They walk the URDF joints (origin, axis-angle),
         // independently of the compiled frames, and allocate: for tests and tools, not hot paths.
@@ -224,6 +251,11 @@ namespace ropras::ompl_ext
         std::vector<CollisionGeometry> geometries_;
         std::vector<std::pair<int, int>> selfPairs_;
         std::vector<std::pair<std::string, std::string>> alwaysPairs_, defaultPairs_;
+        std::vector<std::string> warnings_;
+        std::map<std::string, std::vector<std::string>> groups_;
+        std::string group_;
+        double limitTolerance_{RobotModelOptions::DEFAULT_LIMIT_TOLERANCE};
+        bool strict_{false};
     };
 }  // namespace ropras::ompl_ext
 

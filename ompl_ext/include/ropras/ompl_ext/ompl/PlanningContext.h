@@ -41,9 +41,10 @@ namespace ropras::ompl_ext
         /// replaces the obstacles seen by both validators (O(1)); call between queries
         void setEnvironment(std::shared_ptr<const Environment> environment);
         /// fills an OMPL state from joint values given by name (RobotModel::planningValues: every planning joint
-        /// must be named, other URDF joints are ignored, unknown names throw Error naming \a context)
+        /// must be named, other URDF joints are ignored, so are unknown names unless the model is strict; what is
+        /// ignored, clamped or wrapped is appended to \a warnings)
         void setState(ompl::base::State *state, const std::map<std::string, double> &jointValues,
-                      const std::string &context = "joint values") const;
+                      const std::string &context = "joint values", std::vector<std::string> *warnings = nullptr) const;
     };
 
     PlanningContext makePlanningContext(std::shared_ptr<const RobotModel> robot,

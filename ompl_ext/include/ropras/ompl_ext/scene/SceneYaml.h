@@ -25,11 +25,13 @@ namespace ropras::ompl_ext
     Environment planningSceneFromString(const std::string &yaml, const std::string &sourceName,
                                         std::shared_ptr<const RobotModel> robot);
 
-    /** \brief A MoveIt MotionPlanRequest: start joint state and the first goal's joint constraints. */
+    /** \brief A MoveIt MotionPlanRequest: start joint state, the first goal's joint constraints and the planning
+        group (`group_name`, "" when absent). */
     struct MotionPlanRequest
     {
         std::map<std::string, double> start;
         std::map<std::string, double> goal;
+        std::string group;
     };
     MotionPlanRequest loadMotionPlanRequest(const std::string &path);
     MotionPlanRequest motionPlanRequestFromString(const std::string &yaml, const std::string &sourceName);
