@@ -225,8 +225,6 @@ namespace ropras::pomdp
             std::uint64_t key{0};
             std::uint32_t nextSibling{NONE};
             std::uint32_t visits{0};
-            /** \brief M(bao): macro observations that created or matched this node (observation widening). */
-            std::uint32_t observations{0};
             double value{0.0};
             /** \brief Widening: a new child is due while visits >= widenAt, i.e. |C| <= beta N^alpha. */
             double widenAt{0.0};
@@ -240,8 +238,6 @@ namespace ropras::pomdp
             std::uint32_t macroOffset{0};
             std::uint32_t macroLength{0};
             std::uint32_t firstChild{NONE};
-            /** \brief |C(ba)|: observation children. */
-            std::uint32_t childCount{0};
             std::uint32_t visits{0};
             double q{0.0};
         };
@@ -253,13 +249,15 @@ namespace ropras::pomdp
             macroPool_.clear();
             arena_.clear();
             childArena_.clear();
+            observationCounts_.clear();
         }
 
         /// bytes the tree uses (sizes, not capacities: the pools keep their capacity from one plan() to the next)
         std::size_t treeBytes() const noexcept
         {
             return beliefs_.size() * sizeof(BeliefNode) + actions_.size() * sizeof(ActionNode) +
-                   macroPool_.size() * sizeof(Action) + arena_.usedBytes() + childArena_.usedBytes();
+                   macroPool_.size() * sizeof(Action) + arena_.usedBytes() + childArena_.usedBytes() +
+                   observationCounts_.size() * sizeof(std::uint32_t);
         }
 
         bool treeFull() const noexcept
@@ -371,34 +369,40 @@ namespace ropras::pomdp
             otherwise an existing child drawn w.p. M(bao) / sum M). */
         std::uint32_t childFor(std::uint32_t a, std::uint64_t key, Rng &rng)
         {
-            std::uint32_t total = 0;
+            if (settings_.betaO == 0.0)
+            {
+                return detail::observationChild(beliefs_, actions_[a].firstChild, key);
+            }
+            // M(bao) lives in observationCounts_ (indexed like beliefs_), kept only with widening: the nodes stay
+            // 64 bytes
+            std::uint32_t children = 0, total = 0;
             for (std::uint32_t c = actions_[a].firstChild; c != NONE; c = beliefs_[c].nextSibling)
             {
                 if (beliefs_[c].key == key)
                 {
-                    ++beliefs_[c].observations;
+                    ++observationCounts_[c];
                     return c;
                 }
-                total += beliefs_[c].observations;
+                ++children;
+                total += observationCounts_[c];
             }
-            const ActionNode &action = actions_[a];
-            if (settings_.betaO > 0.0 && action.childCount > 0 &&
-                static_cast<double>(action.childCount) >
-                    settings_.betaO * std::pow(static_cast<double>(action.visits), settings_.alphaO))
+            if (children > 0 &&
+                static_cast<double>(children) >
+                    settings_.betaO * std::pow(static_cast<double>(actions_[a].visits), settings_.alphaO))
             {
                 auto u = static_cast<std::uint32_t>(rng.uniformIndex(total));
-                for (std::uint32_t c = action.firstChild; c != NONE; c = beliefs_[c].nextSibling)
+                for (std::uint32_t c = actions_[a].firstChild; c != NONE; c = beliefs_[c].nextSibling)
                 {
-                    if (u < beliefs_[c].observations)
+                    if (u < observationCounts_[c])
                     {
                         return c;
                     }
-                    u -= beliefs_[c].observations;
+                    u -= observationCounts_[c];
                 }
             }
             const std::uint32_t c = detail::observationChild(beliefs_, actions_[a].firstChild, key);
-            ++actions_[a].childCount;
-            beliefs_[c].observations = 1;
+            observationCounts_.resize(beliefs_.size(), 0);
+            observationCounts_[c] = 1;
             return c;
         }
 
@@ -503,6 +507,8 @@ namespace ropras::pomdp
         ParticleArena<std::uint32_t> childArena_;
         SearchStatistics stats_;
         std::vector<double> widenTable_;
+        /// M(bao) per belief node (observation widening only)
+        std::vector<std::uint32_t> observationCounts_;
     };
 }  // namespace ropras::pomdp
 
