@@ -42,6 +42,8 @@ namespace
         std::string record;
         std::size_t beliefEvery{0};
         std::size_t maxParticles{200};
+        std::string dumpTree;
+        std::string dumpCalls{"0"};
         std::vector<std::string> params;
         std::string config;
         bool replanEveryStep{false};
@@ -118,6 +120,8 @@ namespace
         settings.recordDir = o.record;
         settings.record.beliefEvery = o.beliefEvery;
         settings.record.maxParticles = o.maxParticles;
+        settings.record.tree.dir = o.dumpTree;
+        settings.record.tree.parseCalls(o.dumpCalls);
 
         // every setting is checked before anything is written or started
         const auto resolved = sc::resolvedRunSettings(*scenario, settings.run);
@@ -262,6 +266,12 @@ namespace
         app.add_option("--max-particles", o->maxParticles, "With --record: at most this many particles per belief")
             ->capture_default_str()
             ->check(ropras::bin::POSITIVE_COUNT);
+        app.add_option("--dump-tree", o->dumpTree,
+                       "Write the search tree of chosen planning calls as JSON: "
+                       "DIR/<scenario>-<solver>-<episode>-plan<k>.json");
+        app.add_option("--dump-calls", o->dumpCalls,
+                       "With --dump-tree: planning calls (0-based, per episode) to write, e.g. 0,5,10, or all")
+            ->capture_default_str();
         app.add_option("--param", o->params, "Solver / filter / planner parameter name=value (repeatable)");
         app.add_option("--config", o->config, "JSON file overriding keys of the scenario's default configuration")
             ->check(CLI::ExistingFile);

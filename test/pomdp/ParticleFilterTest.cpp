@@ -187,3 +187,38 @@ TEST(ParticleFilterTest, BadSettingsThrow)
     p.set("resample_threshold", 2.0);
     EXPECT_THROW(ParticleFilterSettings::fromParameters(p), ropras::Error);
 }
+
+TEST(ParticleFilterTest, ContinuationRemovesParticlesThatWouldHaveEnded)
+{
+    // CounterModel: s' = s + 1, terminal once s' >= terminalAt = 3; the observation says nothing (probability 1)
+    const auto model = std::make_shared<const ropras::pomdp::test::CounterModel>(ropras::pomdp::test::CounterModel{3});
+    for (const bool continuation : {false, true})
+    {
+        ropras::pomdp::ParticleFilterSettings s;
+        s.numParticles = 300;
+        s.continuation = continuation;
+        ropras::pomdp::ParticleFilter<ropras::pomdp::test::CounterModel> filter(model, s);
+        std::vector<int> start;
+        for (int i = 0; i < 300; ++i)
+            start.push_back(i % 3);  // 0, 1, 2 in equal parts
+        filter.setParticles(start);
+        ropras::pomdp::Rng rng(5);
+        EXPECT_TRUE(filter.update(1, 1, rng));
+        std::size_t ended = 0;
+        for (const int p : filter.particles())
+            ended += p >= 3 ? 1 : 0;
+        if (continuation)
+        {
+            EXPECT_EQ(ended, 0u) << "the episode went on: no particle may be in a terminal state";
+            EXPECT_EQ(filter.particles().size(), 300u);
+        }
+        else
+        {
+            EXPECT_GT(ended, 60u) << "without the condition a third of the particles are terminal (100 expected)";
+            EXPECT_LT(ended, 140u);
+        }
+    }
+    ropras::pomdp::ParameterMap p;
+    p.set("continuation", 2.0);
+    EXPECT_THROW(ropras::pomdp::ParticleFilterSettings::fromParameters(p), ropras::Error);
+}

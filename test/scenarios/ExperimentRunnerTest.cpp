@@ -309,6 +309,75 @@ namespace ropras::scenarios::test
         std::filesystem::remove_all(dir);
     }
 
+    TEST(ExperimentRunner, TreeDumpsAreValidJsonWithConsistentCounts)
+    {
+        const auto toy = makeToyScenario(15);
+        ExperimentSettings s = toySettings("ropras3", 2, 60);
+        const auto dir = freshDirectory("trees");
+        s.record.tree.dir = (dir / "t").string();
+        s.record.tree.parseCalls("0,1");
+        const auto records = runExperiment(*toy, s);
+        ASSERT_EQ(records.size(), 2u);
+        for (std::size_t episode = 0; episode < 2; ++episode)
+        {
+            EXPECT_FALSE(
+                std::filesystem::exists(dir / "t" / ("toy-ropras3-" + std::to_string(episode) + "-plan2.json")));
+            for (std::size_t call = 0; call < 2 && call < records[episode]["plans"].get<std::size_t>(); ++call)
+            {
+                const auto path =
+                    dir / "t" / ("toy-ropras3-" + std::to_string(episode) + "-plan" + std::to_string(call) + ".json");
+                std::ifstream file(path);
+                ASSERT_TRUE(file) << path;
+                const auto tree = nlohmann::json::parse(file);  // throws on invalid JSON
+                EXPECT_EQ(tree["solver"], "ropras3");
+                EXPECT_EQ(tree["plan"], call);
+                EXPECT_EQ(tree["simulations"], 60);
+                const auto &beliefs = tree["beliefs"];
+                const auto &actions = tree["actions"];
+                ASSERT_GE(beliefs.size(), 2u);
+                EXPECT_EQ(beliefs[0]["visits"], 60) << "every simulation passes the root";
+                EXPECT_TRUE(beliefs[0]["parent"].is_null());
+                std::size_t levelTotal = 0;
+                for (const auto &l : tree["levels"])
+                    levelTotal += l["beliefs"].get<std::size_t>();
+                EXPECT_EQ(levelTotal, beliefs.size());
+                for (std::size_t i = 0; i < beliefs.size(); ++i)
+                {
+                    const auto &b = beliefs[i];
+                    EXPECT_EQ(b["id"], i);
+                    EXPECT_EQ(b["key"].get<std::string>().size(), 16u);
+                    std::size_t visits = 0;
+                    for (const auto &a : b["actions"])
+                    {
+                        EXPECT_EQ(actions[a.get<std::size_t>()]["parent"], i);
+                        visits += actions[a.get<std::size_t>()]["visits"].get<std::size_t>();
+                    }
+                    EXPECT_EQ(visits, b["visits"].get<std::size_t>()) << "N(b) = sum N(ba), belief " << i;
+                    if (i > 0)
+                    {
+                        const auto &parent = actions[b["parent"].get<std::size_t>()];
+                        const auto &grand = beliefs[parent["parent"].get<std::size_t>()];
+                        EXPECT_EQ(b["depth"], grand["depth"].get<std::size_t>() + 1);
+                        EXPECT_EQ(b["steps"], grand["steps"].get<std::size_t>() + parent["length"].get<std::size_t>());
+                        bool listed = false;
+                        for (const auto &c : parent["children"])
+                            listed = listed || c == i;
+                        EXPECT_TRUE(listed) << "belief " << i << " is a child of its parent action";
+                    }
+                }
+                for (const auto &a : actions)
+                {
+                    std::size_t below = 0;
+                    for (const auto &c : a["children"])
+                        below += beliefs[c.get<std::size_t>()]["particles"].get<std::size_t>();
+                    EXPECT_LE(below, a["visits"].get<std::size_t>()) << "at most one particle per visit goes down";
+                    EXPECT_EQ(a["macro"].get<std::string>().rfind("len " + a["length"].dump(), 0), 0u);
+                }
+            }
+        }
+        std::filesystem::remove_all(dir);
+    }
+
     TEST(ExperimentRunner, BadSettingsThrowBeforeAnyEpisode)
     {
         const auto toy = makeToyScenario();

@@ -48,14 +48,14 @@ namespace ropras::scenarios
             return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         }
 
-        /** \brief Creates \a dir and checks that a file can be written there. */
-        void prepareRecordDirectory(const std::string &dir)
+        /** \brief Creates \a dir and checks that a file can be written there (\a option names it in errors). */
+        void prepareRecordDirectory(const std::string &dir, const std::string &option = "--record")
         {
             std::error_code ec;
             std::filesystem::create_directories(dir, ec);
             if (ec || !std::filesystem::is_directory(dir))
             {
-                throw Error("--record directory \"" + dir + "\" cannot be created" +
+                throw Error(option + " directory \"" + dir + "\" cannot be created" +
                             (ec ? ": " + ec.message() : std::string(" (a file of that name exists)")));
             }
             const std::filesystem::path probe = std::filesystem::path(dir) / ".ropras-write-test";
@@ -63,7 +63,7 @@ namespace ropras::scenarios
                 std::ofstream file(probe);
                 if (!file)
                 {
-                    throw Error("--record directory \"" + dir + "\" is not writable");
+                    throw Error(option + " directory \"" + dir + "\" is not writable");
                 }
             }
             std::filesystem::remove(probe, ec);
@@ -196,6 +196,10 @@ namespace ropras::scenarios
         {
             prepareRecordDirectory(settings.recordDir);
         }
+        if (!settings.record.tree.dir.empty())
+        {
+            prepareRecordDirectory(settings.record.tree.dir, "--dump-tree");
+        }
         const nlohmann::json configuration = experimentConfiguration(scenario, settings, run);
 
         // the shard's episodes are index, index + N, ...: computed, never searched for among all indices
@@ -224,7 +228,10 @@ namespace ropras::scenarios
                     const auto episodeStart = std::chrono::steady_clock::now();
                     nlohmann::json recording;
                     const bool record = !settings.recordDir.empty();
-                    const auto result = scenario.runEpisode(run, seed, record ? &recording : nullptr, settings.record);
+                    RecordSettings recordSettings = settings.record;
+                    const std::string name = recordingFileName(scenario.name(), run.solver, episode);
+                    recordSettings.tree.prefix = name.substr(0, name.size() - 5);  // without ".json"
+                    const auto result = scenario.runEpisode(run, seed, record ? &recording : nullptr, recordSettings);
                     nlohmann::json line =
                         episodeRecord(configuration, episode, seed, result, secondsSince(episodeStart));
                     if (record)

@@ -73,6 +73,20 @@ namespace ropras::pomdp
             (void)macro;
             (void)statistics;
         }
+        /** \brief Whether to receive the search tree of planning call \a plan (0-based) through onTree(). */
+        virtual bool wantsTree(std::size_t plan) const
+        {
+            (void)plan;
+            return false;
+        }
+        /** \brief The search tree of planning call \a plan (made at primitive step \a step), when wantsTree(plan)
+            and the solver has a tree. */
+        virtual void onTree(std::size_t plan, std::size_t step, const TreeSnapshot &tree)
+        {
+            (void)plan;
+            (void)step;
+            (void)tree;
+        }
         /** \brief After primitive step \a step (1-based) and the filter update: the world's result and the
             belief (unchanged when the step was terminal). */
         virtual void onStep(std::size_t step, const Action &action, const StepResult<State, Observation> &result,
@@ -156,6 +170,14 @@ namespace ropras::pomdp
                 settings.planningParticles > 0 ? settings.planningParticles : filter.particles().size();
             const auto belief = filter.sampleUnweighted(n, rng);
             auto plan = solver.plan(BeliefView<typename M::State>{belief.data(), belief.size()}, settings.budget, rng);
+            if (observer && observer->wantsTree(result.plans))
+            {
+                TreeSnapshot tree;
+                if (solver.treeSnapshot(tree))
+                {
+                    observer->onTree(result.plans, result.steps, tree);
+                }
+            }
             ++result.plans;
             result.search.accumulate(plan.statistics);
             if (!plan.valid || plan.action.empty())

@@ -36,6 +36,9 @@ namespace ropras::pomdp
         State next{};
         Observation lastObservation{};
         std::uint64_t observationKey{0};
+        /** \brief The key of the last non-empty primitive observation alone (empty = the key of a
+            default-constructed Observation, e.g. None); the empty key when every observation was empty. */
+        std::uint64_t lastObservationKey{0};
         /** \brief Discounted sum of the rewards inside the macro: sum_k gamma^k r_k. */
         double reward{0.0};
         /** \brief Number of primitive steps executed (< length when the macro terminated early). */
@@ -66,13 +69,20 @@ namespace ropras::pomdp
         const double gamma = model.discount();
         out.next = s;
         std::uint64_t key = 0x243f6a8885a308d3ULL;
+        const std::uint64_t emptyKey = observationKeyOf(model, typename M::Observation{});
+        out.lastObservationKey = emptyKey;
         for (const auto &a : macro)
         {
             auto step = model.step(out.next, a, rng);
             out.reward += out.discount * step.reward;
             out.discount *= gamma;
             ++out.steps;
-            key = combineObservationKey(key, observationKeyOf(model, step.observation));
+            const std::uint64_t stepKey = observationKeyOf(model, step.observation);
+            key = combineObservationKey(key, stepKey);
+            if (stepKey != emptyKey)
+            {
+                out.lastObservationKey = stepKey;
+            }
             out.next = std::move(step.next);
             out.lastObservation = std::move(step.observation);
             if (step.terminal)

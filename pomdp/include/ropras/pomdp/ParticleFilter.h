@@ -77,6 +77,10 @@ namespace ropras::pomdp
         /** \brief Apply the model's reinvigorate() to every particle after resampling (needs the model's
             optional reinvigorate()). */
         bool reinvigorate{false};
+        /** \brief Condition on continuation: update() follows a step that did not end the episode (a terminal
+            step ends it before any update), so a particle whose own step is terminal (it would have entered
+            the goal or a danger zone) gets weight 0, whatever the observation says. */
+        bool continuation{false};
 
         static ParticleFilterSettings fromParameters(const ParameterMap &p)
         {
@@ -84,6 +88,7 @@ namespace ropras::pomdp
             s.numParticles = p.getCount("particles", s.numParticles);
             s.resampleThreshold = p.get("resample_threshold", s.resampleThreshold);
             s.reinvigorate = p.getCount("reinvigorate", 0) != 0;
+            s.continuation = p.getCount("continuation", s.continuation ? 1 : 0, 1) != 0;
             if (s.numParticles == 0)
             {
                 throw Error("particle filter: particles must be >= 1");
@@ -166,8 +171,10 @@ namespace ropras::pomdp
             double total = 0.0;
             for (std::size_t i = 0; i < particles_.size(); ++i)
             {
-                particles_[i] = model.step(particles_[i], a, rng).next;
-                const double z = model.observationProbability(o, particles_[i], a);
+                auto step = model.step(particles_[i], a, rng);
+                particles_[i] = std::move(step.next);
+                const double z =
+                    settings_.continuation && step.terminal ? 0.0 : model.observationProbability(o, particles_[i], a);
                 weights_[i] *= std::isfinite(z) && z > 0.0 ? z : 0.0;
                 total += weights_[i];
             }

@@ -168,6 +168,40 @@ namespace ropras::pomdp
             return out;
         }
 
+        /** \brief The tree of the last plan() in breadth-first order: value = max Q over visited children,
+            pi* = the children's visit shares. */
+        bool treeSnapshot(TreeSnapshot &out) const override
+        {
+            if (beliefs_.empty())
+            {
+                out = TreeSnapshot{};
+                return false;
+            }
+            std::vector<std::uint32_t> order = detail::beginSnapshot(out, name_, stats_);
+            for (std::size_t i = 0; i < order.size(); ++i)
+            {
+                const BeliefNode &node = beliefs_[order[i]];
+                auto &b = out.beliefs[i];
+                b.key = node.key;
+                b.visits = node.visits;
+                b.particles = node.particles.size;
+                b.value = 0.0;
+                bool any = false;
+                for (std::uint32_t a = node.firstAction; a != NONE; a = actions_[a].nextSibling)
+                {
+                    auto &action = detail::snapshotAction(out, static_cast<std::uint32_t>(i), actions_[a], macroPool_,
+                                                          beliefs_, order);
+                    action.piStar = node.visits > 0 ? static_cast<double>(action.visits) / node.visits : 0.0;
+                    if (action.visits > 0 && (!any || action.q > out.beliefs[i].value))
+                    {
+                        out.beliefs[i].value = action.q;
+                        any = true;
+                    }
+                }
+            }
+            return true;
+        }
+
     private:
         static constexpr std::uint32_t NONE = std::numeric_limits<std::uint32_t>::max();
 

@@ -35,6 +35,25 @@ namespace ropras::pomdp
         unsigned rolloutSteps{10};
         /** \brief Cap on the particles kept per belief node (uniform subsample); 0 = keep all (the paper). */
         unsigned maxParticlesPerNode{0};
+        /** \brief Observation progressive widening (Algorithm 2, lines 6-10) over the binned macro observations:
+            a macro observation whose key has no child yet gets a new child iff |C(ba)| <= betaO N(ba)^alphaO,
+            else the particle joins an existing child drawn w.p. M(bao) / sum M (M counts the observations that
+            created or matched the child). betaO = 0: no widening, every new key gets a child (binning only). */
+        double betaO{0.0};
+        double alphaO{0.5};
+        /** \brief What identifies a macro observation: SEQUENCE = the whole sequence of binned primitive
+            observations, LAST = the last non-empty one alone. */
+        enum class MacroObservation
+        {
+            SEQUENCE = 0,
+            LAST = 1
+        };
+        MacroObservation macroObservation{MacroObservation::SEQUENCE};
+        /** \brief A new macro (planned from the sampled particle s) is first executed from a second particle
+            drawn independently from the node (true), not from s itself (false, Algorithm 2 as written): the
+            first return then estimates Q(b, a) = E_{s ~ b} R(s, a) without the bias of a plan evaluated on the
+            state it was planned from. */
+        bool independentEvaluation{false};
         /** \brief Executed action: false = argmax Q (default), true = sample pi*(a|b) ~ exp(eta Q). */
         bool sampleAction{false};
         /** \brief Measure time spent in the model and in the reference policy (two clock reads per call). */
@@ -42,8 +61,8 @@ namespace ropras::pomdp
         /** \brief Memory cap of the tree (MiB): the search stops there and says so (SearchStatistics). */
         double maxTreeMegabytes{detail::DEFAULT_MAX_TREE_MB};
 
-        /** \brief Reads eta, beta_a, alpha_a, depth, rollout_steps, max_particles, sample_action, profile,
-            max_tree_mb;
+        /** \brief Reads eta, beta_a, alpha_a, beta_o, alpha_o, macro_observation, independent_eval, depth,
+            rollout_steps, max_particles, sample_action, profile, max_tree_mb;
             throws ropras::Error for out-of-range values. */
         static RopRas3Settings fromParameters(const ParameterMap &p)
         {
@@ -56,6 +75,11 @@ namespace ropras::pomdp
                 static_cast<unsigned>(p.getCount("rollout_steps", s.rolloutSteps, ParameterMap::MAX_UNSIGNED));
             s.maxParticlesPerNode =
                 static_cast<unsigned>(p.getCount("max_particles", s.maxParticlesPerNode, ParameterMap::MAX_UNSIGNED));
+            s.betaO = p.get("beta_o", s.betaO);
+            s.alphaO = p.get("alpha_o", s.alphaO);
+            const auto mode = p.getCount("macro_observation", static_cast<std::size_t>(s.macroObservation), 1);
+            s.macroObservation = static_cast<MacroObservation>(mode);
+            s.independentEvaluation = p.getCount("independent_eval", s.independentEvaluation ? 1 : 0, 1) != 0;
             s.sampleAction = p.getCount("sample_action", 0) != 0;
             s.profile = p.getCount("profile", 0) != 0;
             s.maxTreeMegabytes = detail::maxTreeMegabytes(p, "ROP-RAS3");
@@ -73,6 +97,11 @@ namespace ropras::pomdp
             {
                 throw Error("ROP-RAS3: beta_a = " + std::to_string(betaA) + ", alpha_a = " + std::to_string(alphaA) +
                             " must be > 0 and >= 0");
+            }
+            if (!(betaO >= 0.0) || !std::isfinite(betaO) || !(alphaO >= 0.0) || !std::isfinite(alphaO))
+            {
+                throw Error("ROP-RAS3: beta_o = " + std::to_string(betaO) + ", alpha_o = " + std::to_string(alphaO) +
+                            " must be >= 0 (beta_o = 0: observation binning without widening)");
             }
         }
     };
@@ -162,6 +191,32 @@ namespace ropras::pomdp
             return out;
         }
 
+        /** \brief The tree of the last plan() in breadth-first order, with pi* ~ exp(eta Q) per node. */
+        bool treeSnapshot(TreeSnapshot &out) const override
+        {
+            if (beliefs_.empty())
+            {
+                out = TreeSnapshot{};
+                return false;
+            }
+            std::vector<std::uint32_t> order = detail::beginSnapshot(out, name_, stats_);
+            for (std::size_t i = 0; i < order.size(); ++i)
+            {
+                const BeliefNode &node = beliefs_[order[i]];
+                out.beliefs[i].key = node.key;
+                out.beliefs[i].visits = node.visits;
+                out.beliefs[i].value = node.value;
+                out.beliefs[i].particles = node.particles.size;
+                for (const std::uint32_t a : childArena_.view(node.children))
+                {
+                    detail::snapshotAction(out, static_cast<std::uint32_t>(i), actions_[a], macroPool_, beliefs_,
+                                           order);
+                }
+            }
+            fillSoftPolicy(out, settings_.eta);
+            return true;
+        }
+
     private:
         static constexpr std::uint32_t NONE = std::numeric_limits<std::uint32_t>::max();
 
@@ -194,13 +249,15 @@ namespace ropras::pomdp
             macroPool_.clear();
             arena_.clear();
             childArena_.clear();
+            observationCounts_.clear();
         }
 
         /// bytes the tree uses (sizes, not capacities: the pools keep their capacity from one plan() to the next)
         std::size_t treeBytes() const noexcept
         {
             return beliefs_.size() * sizeof(BeliefNode) + actions_.size() * sizeof(ActionNode) +
-                   macroPool_.size() * sizeof(Action) + arena_.usedBytes() + childArena_.usedBytes();
+                   macroPool_.size() * sizeof(Action) + arena_.usedBytes() + childArena_.usedBytes() +
+                   observationCounts_.size() * sizeof(std::uint32_t);
         }
 
         bool treeFull() const noexcept
@@ -231,16 +288,18 @@ namespace ropras::pomdp
 
         /** \brief ActionProgressiveWiden; NONE when a new macro was due, the reference failed and there is
             no child to fall back on. */
-        std::uint32_t progressiveWiden(std::uint32_t b, const State &s, Rng &rng)
+        std::uint32_t progressiveWiden(std::uint32_t b, const State &s, Rng &rng, bool &created)
         {
+            created = false;
             // |C| <= beta N^alpha  <=>  N >= (|C| / beta)^(1 / alpha); the threshold is recomputed only when
             // a child is added (N = 0 admits the first child for any alpha > 0, as 0^alpha = 0).
             if (static_cast<double>(beliefs_[b].visits) >= beliefs_[b].widenAt)
             {
-                const std::uint32_t created = newAction(b, s, rng);
-                if (created != NONE)
+                const std::uint32_t fresh = newAction(b, s, rng);
+                if (fresh != NONE)
                 {
-                    return created;
+                    created = true;
+                    return fresh;
                 }
             }
             if (beliefs_[b].children.size == 0)
@@ -305,9 +364,52 @@ namespace ropras::pomdp
             return std::pow(ratio, 1.0 / settings_.alphaA);
         }
 
-        std::uint32_t childFor(std::uint32_t a, std::uint64_t key)
+        /** \brief The observation child of action \a a for the macro observation \a key: the child with that
+            key, else a new one (binning; with observation widening only while |C(ba)| <= beta_o N(ba)^alpha_o,
+            otherwise an existing child drawn w.p. M(bao) / sum M). */
+        std::uint32_t childFor(std::uint32_t a, std::uint64_t key, Rng &rng)
         {
-            return detail::observationChild(beliefs_, actions_[a].firstChild, key);
+            if (settings_.betaO == 0.0)
+            {
+                return detail::observationChild(beliefs_, actions_[a].firstChild, key);
+            }
+            // M(bao) lives in observationCounts_ (indexed like beliefs_), kept only with widening: the nodes stay
+            // 64 bytes
+            std::uint32_t children = 0, total = 0;
+            for (std::uint32_t c = actions_[a].firstChild; c != NONE; c = beliefs_[c].nextSibling)
+            {
+                if (beliefs_[c].key == key)
+                {
+                    ++observationCounts_[c];
+                    return c;
+                }
+                ++children;
+                total += observationCounts_[c];
+            }
+            if (children > 0 &&
+                static_cast<double>(children) >
+                    settings_.betaO * std::pow(static_cast<double>(actions_[a].visits), settings_.alphaO))
+            {
+                auto u = static_cast<std::uint32_t>(rng.uniformIndex(total));
+                for (std::uint32_t c = actions_[a].firstChild; c != NONE; c = beliefs_[c].nextSibling)
+                {
+                    if (u < observationCounts_[c])
+                    {
+                        return c;
+                    }
+                    u -= observationCounts_[c];
+                }
+            }
+            const std::uint32_t c = detail::observationChild(beliefs_, actions_[a].firstChild, key);
+            observationCounts_.resize(beliefs_.size(), 0);
+            observationCounts_[c] = 1;
+            return c;
+        }
+
+        std::uint64_t macroKey(const MacroStepResult<State, typename M::Observation> &step) const noexcept
+        {
+            return settings_.macroObservation == RopRas3Settings::MacroObservation::LAST ? step.lastObservationKey
+                                                                                         : step.observationKey;
         }
 
         double simulate(std::uint32_t b, unsigned depth, Rng &rng) noexcept
@@ -321,17 +423,20 @@ namespace ropras::pomdp
             {
                 stats_.maxDepth = depth;
             }
-            const std::uint32_t a = progressiveWiden(b, s, rng);
+            bool created = false;
+            const std::uint32_t a = progressiveWiden(b, s, rng, created);
             if (a == NONE)
             {
                 return rollout(s, rng);
             }
             const auto macro = detail::macroOf(macroPool_, actions_[a]);
-            const auto step = detail::executeMacroCounted(*model_, s, macro, rng, settings_.profile, stats_);
+            const State &start =
+                created && settings_.independentEvaluation ? arena_.sample(beliefs_[b].particles, rng) : s;
+            const auto step = detail::executeMacroCounted(*model_, start, macro, rng, settings_.profile, stats_);
             double r = step.reward;
             if (!step.terminal)
             {
-                const std::uint32_t c = childFor(a, step.observationKey);
+                const std::uint32_t c = childFor(a, macroKey(step), rng);
                 arena_.add(beliefs_[c].particles, step.next, settings_.maxParticlesPerNode, rng);
                 r += step.discount * simulate(c, depth + 1, rng);
             }
@@ -402,6 +507,8 @@ namespace ropras::pomdp
         ParticleArena<std::uint32_t> childArena_;
         SearchStatistics stats_;
         std::vector<double> widenTable_;
+        /// M(bao) per belief node (observation widening only)
+        std::vector<std::uint32_t> observationCounts_;
     };
 }  // namespace ropras::pomdp
 

@@ -11,6 +11,7 @@
 #include "ropras/pomdp/ParameterMap.h"
 #include "ropras/pomdp/SearchStatistics.h"
 #include "ropras/pomdp/Solver.h"
+#include "ropras/pomdp/TreeSnapshot.h"
 
 namespace ropras::pomdp::detail
 {
@@ -103,6 +104,49 @@ namespace ropras::pomdp::detail
         beliefs.back().nextSibling = firstChild;
         firstChild = static_cast<std::uint32_t>(beliefs.size() - 1);
         return firstChild;
+    }
+    /** \brief Starts the snapshot \a out of a tree searched by \a solver: the statistics and the root belief;
+        returns the breadth-first queue of solver belief indices, holding the root (0). */
+    inline std::vector<std::uint32_t> beginSnapshot(TreeSnapshot &out, const std::string &solver,
+                                                    const SearchStatistics &stats)
+    {
+        out = TreeSnapshot{};
+        out.solver = solver;
+        out.simulations = stats.simulations;
+        out.referenceRequested = stats.referenceRequested;
+        out.beliefs.emplace_back();
+        return {0};
+    }
+
+    /** \brief Appends the solver's action node \a node (pool \a pool) to snapshot \a out under snapshot belief
+        \a parent, with its observation children (the sibling list of \a beliefs starting at node.firstChild);
+        their solver indices are queued in \a order for the breadth-first walk. Returns the snapshot action. */
+    template <class Action, class ActionNode, class BeliefNodes>
+    TreeSnapshot::Action &snapshotAction(TreeSnapshot &out, std::uint32_t parent, const ActionNode &node,
+                                         const std::vector<Action> &pool, const BeliefNodes &beliefs,
+                                         std::vector<std::uint32_t> &order)
+    {
+        constexpr std::uint32_t NONE = std::numeric_limits<std::uint32_t>::max();
+        const auto index = static_cast<std::uint32_t>(out.actions.size());
+        out.beliefs[parent].children.push_back(index);
+        out.actions.emplace_back();
+        TreeSnapshot::Action &action = out.actions.back();
+        action.parent = parent;
+        action.visits = node.visits;
+        action.q = node.q;
+        action.length = node.macroLength;
+        action.brief = macroBrief(macroOf(pool, node));
+        for (std::uint32_t c = node.firstChild; c != NONE; c = beliefs[c].nextSibling)
+        {
+            action.children.push_back(static_cast<std::uint32_t>(order.size()));
+            order.push_back(c);
+            TreeSnapshot::Belief child;
+            child.parent = index;
+            child.depth = out.beliefs[parent].depth + 1;
+            child.steps = out.beliefs[parent].steps + action.length;
+            out.beliefs.push_back(child);
+        }
+        return action;
     }
 }  // namespace ropras::pomdp::detail
 

@@ -9,6 +9,7 @@
 #include "ropras/pomdp/MacroAction.h"
 #include "ropras/pomdp/Rng.h"
 #include "ropras/pomdp/SearchStatistics.h"
+#include "ropras/pomdp/TreeSnapshot.h"
 
 namespace ropras::pomdp
 {
@@ -39,6 +40,14 @@ namespace ropras::pomdp
 
         /** \brief Plans from the unweighted particle belief \a belief within \a budget. */
         virtual PlanResult<Action> plan(BeliefView<State> belief, const Budget &budget, Rng &rng) = 0;
+
+        /** \brief Copies the search tree of the last plan() into \a out; false (default) for solvers without a
+            tree (B-plan, RBSS) or before the first plan. */
+        virtual bool treeSnapshot(TreeSnapshot &out) const
+        {
+            (void)out;
+            return false;
+        }
     };
 
     namespace detail

@@ -219,6 +219,48 @@ namespace ropras::scenarios
         std::size_t lastStep_{0};
     };
 
+    /** \brief Writes the search trees of the planning calls \a settings names (writeTreeJson()) and forwards
+        every event to \a inner (optional, e.g. an EpisodeRecorder). */
+    template <class M>
+    class TreeDumper final : public pomdp::EpisodeObserver<M>
+    {
+    public:
+        using typename pomdp::EpisodeObserver<M>::State;
+        using typename pomdp::EpisodeObserver<M>::Action;
+        using typename pomdp::EpisodeObserver<M>::Observation;
+
+        TreeDumper(const TreeDumpSettings &settings, pomdp::EpisodeObserver<M> *inner)
+            : settings_(settings), inner_(inner)
+        {
+        }
+
+        void onStart(const State &trueState, const std::vector<State> &particles) override
+        {
+            if (inner_)
+                inner_->onStart(trueState, particles);
+        }
+        void onPlan(std::size_t step, const std::vector<Action> &macro, const pomdp::SearchStatistics &s) override
+        {
+            if (inner_)
+                inner_->onPlan(step, macro, s);
+        }
+        bool wantsTree(std::size_t plan) const override { return settings_.wants(plan); }
+        void onTree(std::size_t plan, std::size_t step, const pomdp::TreeSnapshot &tree) override
+        {
+            writeTreeJson(settings_.fileName(plan), tree, plan, step);
+        }
+        void onStep(std::size_t step, const Action &a, const pomdp::StepResult<State, Observation> &result,
+                    const std::vector<State> &particles) override
+        {
+            if (inner_)
+                inner_->onStep(step, a, result, particles);
+        }
+
+    private:
+        const TreeDumpSettings &settings_;
+        pomdp::EpisodeObserver<M> *inner_;
+    };
+
     /** \brief A Scenario over model type M from its parts: builds a fresh solver (by name, pomdp::makeSolver),
         particle filter and world per episode and runs pomdp::runEpisode(). Random streams per episode:
         Rng(seed) seeds the filter and solver, and splits off the world's and the reference planner's. */
@@ -266,6 +308,11 @@ namespace ropras::scenarios
             episode.replanEveryStep = settings.replanEveryStep;
             if (!recording)
             {
+                if (!record.tree.dir.empty())
+                {
+                    TreeDumper<M> dumper(record.tree, nullptr);
+                    return pomdp::runEpisode(*parts_.model, *parts.solver, filter, *world, episode, rng, &dumper);
+                }
                 return pomdp::runEpisode(*parts_.model, *parts.solver, filter, *world, episode, rng);
             }
             *recording = nlohmann::json::object();
@@ -273,7 +320,8 @@ namespace ropras::scenarios
             (*recording)["seed"] = seed;
             (*recording)["scene"] = parts_.scene;
             EpisodeRecorder<M> recorder(parts_, record, *recording);
-            auto result = pomdp::runEpisode(*parts_.model, *parts.solver, filter, *world, episode, rng, &recorder);
+            TreeDumper<M> dumper(record.tree, &recorder);
+            auto result = pomdp::runEpisode(*parts_.model, *parts.solver, filter, *world, episode, rng, &dumper);
             recorder.finish();
             (*recording)["success"] = result.success;
             (*recording)["steps"] = result.steps;

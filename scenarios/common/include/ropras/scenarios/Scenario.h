@@ -8,6 +8,7 @@
 #include "ropras/pomdp/Budget.h"
 #include "ropras/pomdp/Episode.h"
 #include "ropras/pomdp/ParameterMap.h"
+#include "ropras/scenarios/TreeDump.h"
 
 namespace ropras::scenarios
 {
@@ -32,11 +33,14 @@ namespace ropras::scenarios
     };
 
     /** \brief What to record for pictures: the true trajectory always, belief particles every \c beliefEvery
-        steps (0 = at the start and the end only), at most \c maxParticles of them. */
+        steps (0 = at the start and the end only), at most \c maxParticles of them; and the search trees of
+        the planning calls \c tree names (written by runEpisode() as they are made, whether or not a recording
+        is asked for). */
     struct RecordSettings
     {
         std::size_t beliefEvery{0};
         std::size_t maxParticles{200};
+        TreeDumpSettings tree;
     };
 
     /** \brief One benchmark problem: its POMDP model (what the planner simulates), its world (what really
