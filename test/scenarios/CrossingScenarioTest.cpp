@@ -455,8 +455,12 @@ namespace ropras::scenarios
                 EXPECT_EQ(recording["events"].back()["event"], "goal");
             }
             const std::string svg = renderSvg(recording);
+            // the footprints are the polygons of the "footprint" group (path arrows are polygons too)
+            const std::size_t begin = svg.find("<g id=\"footprint\">");
+            ASSERT_NE(begin, std::string::npos) << solver;
+            const std::size_t end = svg.find("</g>", begin);
             std::size_t polygons = 0;
-            for (std::size_t at = svg.find("<polygon"); at != std::string::npos; at = svg.find("<polygon", at + 1))
+            for (std::size_t at = svg.find("<polygon", begin); at < end; at = svg.find("<polygon", at + 1))
             {
                 ++polygons;
             }
