@@ -307,7 +307,9 @@ TEST(AttachedBodyTest, OverlaySeesTheBaseWithoutCopyingIt)
         valid += a[i] != 0;
         ASSERT_EQ(a[i], b[i]) << "configuration " << i;
         if (i % 20 == 0)
+        {
             EXPECT_EQ(reference.isValid(particle, q), reference.isValid(flat, q));
+        }
     }
     EXPECT_GT(valid, n / 10);
     EXPECT_LT(valid, n * 9 / 10);
@@ -648,12 +650,16 @@ TEST(AttachedBodyTest, ParticleScenesCopiedFromATemplateAnswerAsAFullyBuiltScene
             ASSERT_EQ(batchP[i], valid) << "particle " << particle << ", batch, configuration " << i;
             ASSERT_EQ(batchFlat[i], valid) << "particle " << particle << ", flat batch, configuration " << i;
             if (i % 25 == 0)
+            {
                 EXPECT_EQ(reference.isValid(p, q), reference.isValid(flat, q))
                     << "particle " << particle << ", FCL " << i;
+            }
             if (i + 1 < n && i % 50 == 0)
+            {
                 EXPECT_EQ(checker.isMotionValid(p, q, q + robot->dof(), 0.05),
                           checker.isMotionValid(flat, q, q + robot->dof(), 0.05))
                     << "particle " << particle << ", motion " << i;
+            }
             ++configurations;
             invalid += valid ? 0 : 1;
             onlyByTheBody += !valid && checker.isValid(notHolding, q) ? 1 : 0;
