@@ -4,74 +4,31 @@
 #include <set>
 
 #include "ropras/core/Error.h"
+#include "ropras/scenarios/ConfigReader.h"
 
 namespace ropras::scenarios
 {
     namespace
     {
-        /** \brief Reads typed values of one JSON object, naming the scenario and the (dotted) key in errors. */
-        class KeyReader
+        /** \brief The shared ConfigReader with the crossing's fixed-size arrays, sigma triples and speed lists
+            (errors name the scenario and the dotted key). */
+        class KeyReader : public ConfigReader
         {
         public:
             KeyReader(const nlohmann::json &json, std::string scenario, std::string prefix = "")
-                : json_(json), scenario_(std::move(scenario)), prefix_(std::move(prefix))
+                : ConfigReader(std::move(scenario), json, std::move(prefix))
             {
-                if (!json_.is_object())
-                {
-                    throw Error("scenario " + scenario_ + ": " + (prefix_.empty() ? "the configuration" : prefix_) +
-                                " must be a JSON object");
-                }
             }
 
-            [[noreturn]] void fail(const std::string &key, const std::string &problem) const
-            {
-                throw Error("scenario " + scenario_ + ": key \"" + prefix_ + key + "\" " + problem);
-            }
-
-            void requireKnown(const std::set<std::string> &known) const
-            {
-                for (const auto &item : json_.items())
-                {
-                    if (known.count(item.key()) == 0)
-                    {
-                        fail(item.key(), "is unknown");
-                    }
-                }
-            }
-
-            const nlohmann::json &at(const std::string &key) const
-            {
-                const auto it = json_.find(key);
-                if (it == json_.end())
-                {
-                    fail(key, "is missing");
-                }
-                return *it;
-            }
-
+            using ConfigReader::number;
             double number(const nlohmann::json &v, const std::string &key) const
             {
-                if (!v.is_number())
-                {
-                    fail(key, "must be a number, not " + v.dump());
-                }
-                const double d = v.get<double>();
-                if (!std::isfinite(d))
-                {
-                    fail(key, "= " + v.dump() + " is not finite");
-                }
-                return d;
+                return ConfigReader::number(key, v);
             }
-            double number(const std::string &key) const { return number(at(key), key); }
             /// a number > 0 (or >= 0 when \a zeroOk)
             double positive(const std::string &key, bool zeroOk = false) const
             {
-                const double d = number(key);
-                if (zeroOk ? !(d >= 0.0) : !(d > 0.0))
-                {
-                    fail(key, "= " + at(key).dump() + (zeroOk ? " must be >= 0" : " must be > 0"));
-                }
-                return d;
+                return zeroOk ? nonNegative(key) : ConfigReader::positive(key);
             }
             template <std::size_t N>
             std::array<double, N> array(const nlohmann::json &v, const std::string &key) const
@@ -105,6 +62,7 @@ namespace ropras::scenarios
                 }
                 return out;
             }
+            /// 1 to 64 numbers (the twist set is their product)
             std::vector<double> list(const std::string &key) const
             {
                 const auto &v = at(key);
@@ -112,26 +70,8 @@ namespace ropras::scenarios
                 {
                     fail(key, "must be an array of 1 to 64 numbers, not " + v.dump());
                 }
-                std::vector<double> out;
-                for (const auto &e : v)
-                {
-                    out.push_back(number(e, key));
-                }
-                return out;
+                return numbers(key, 0);
             }
-            bool boolean(const std::string &key) const
-            {
-                const auto &v = at(key);
-                if (!v.is_boolean())
-                {
-                    fail(key, "must be true or false, not " + v.dump());
-                }
-                return v.get<bool>();
-            }
-
-        private:
-            const nlohmann::json &json_;
-            std::string scenario_, prefix_;
         };
 
         bool insideLab(const CrossingConfig &c, double x, double y, double margin)
