@@ -90,5 +90,7 @@ namespace
     }
 
     const ropras::bin::CommandRegistrar reg{
-        {"render", "Draw an episode recorded by `ropras run --record` as an SVG picture (top-down)", setup}};
+        {"render",
+         "Draw an episode recorded by `ropras run --record` as an SVG picture (top view; 3-D problems add a side view)",
+         setup}};
 }  // namespace
