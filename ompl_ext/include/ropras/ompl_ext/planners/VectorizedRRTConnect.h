@@ -75,6 +75,16 @@ namespace ropras::ompl_ext
         double getDynamicDomainAlpha() const { return ddAlpha_; }
         void setDynamicDomainMinRadius(double r) { ddMinRadius_ = r; }
         double getDynamicDomainMinRadius() const { return ddMinRadius_; }
+        /// whether connections take part in the dynamic domain (parameter "dd_connect", default on): a connection
+        /// is refused when its first node's radius is below the distance, and a failed or valid connection step
+        /// shrinks or grows the radius of the node it started from. Off: connections leave radii alone (VAMP's).
+        void setDynamicDomainConnect(bool on) { ddConnect_ = on; }
+        /// balancing rule (parameter "tree_ratio", with balance on): 0 (default) extends the smaller tree in every
+        /// iteration; r > 0 is VAMP's rule: switch to the other tree while |a - b| / a < r (a: the size of the
+        /// tree extended last, b: the other's), i.e. alternate while the sizes are close, else stay on the smaller
+        void setTreeRatio(double r) { treeRatio_ = r; }
+        double getTreeRatio() const { return treeRatio_; }
+        bool getDynamicDomainConnect() const { return ddConnect_; }
         void setDirectConnection(bool on) { direct_ = on; }
         bool getDirectConnection() const { return direct_; }
         void setMaxSamples(unsigned n) { maxSamples_ = n; }
@@ -99,8 +109,9 @@ namespace ropras::ompl_ext
         bool motionValid(const double *a, const double *b);
         bool stateValid(const double *q) const;
         /// \a qf: \a q in float when the caller has it (nullptr: converted here). \a rejected: \a q is clearly
-        /// outside the nearest node's dynamic domain (\a distSq is then not computed)
-        std::size_t nearest(const Tree &tree, const double *q, const float *qf, double &distSq, bool &rejected) const;
+        /// outside the nearest node's dynamic domain (\a distSq is then not computed; only when \a domain)
+        std::size_t nearest(const Tree &tree, const double *q, const float *qf, double &distSq, bool &rejected,
+                            bool domain) const;
         void addNode(Tree &tree, const double *q, int parent);
         /// the next sample into \a out and, in float, into \a outF (for the nearest-neighbour scan)
         void sample(double *out, float *outF);
@@ -138,6 +149,8 @@ namespace ropras::ompl_ext
         double ddAlpha_{1.0e-4};
         double ddMinRadius_{1.0};
         bool direct_{true};
+        bool ddConnect_{true};
+        double treeRatio_{0.0};
         std::uint64_t motionChecks_{0};  ///< motion checks so far (8 units of work between two PTC evaluations)
         unsigned maxSamples_{0};         ///< 0: unlimited (until the termination condition)
         unsigned seed_{0};               ///< 0: Halton shift from OMPL's RNG
