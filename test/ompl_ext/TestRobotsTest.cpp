@@ -7,9 +7,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "ropras/ompl_ext/collision/CollisionChecker.h"
@@ -18,6 +20,7 @@
 #include "ropras/ompl_ext/ompl/PlannerRegistry.h"
 #include "ropras/ompl_ext/ompl/PlanningContext.h"
 #include "ropras/ompl_ext/ompl/StateValidityChecker.h"
+#include "ropras/ompl_ext/planners/VectorizedRRTConnect.h"
 #include "ropras/ompl_ext/scene/Environment.h"
 
 using namespace ropras::ompl_ext;
@@ -196,5 +199,29 @@ TEST(TestRobots, BothRrtConnectsPlanForTheTwoArms)
                 path.getState(i + 1)->as<ompl::base::RealVectorStateSpace::StateType>()->values,
                 MotionValidator::DEFAULT_RESOLUTION))
                 << planner << " segment " << i;
+    }
+}
+
+TEST(TestRobots, DynamicDomainIsOnUpToEightJointsUnlessSet)
+{
+    // VectorizedRRTConnect's default: the dynamic domain for the 8-joint torso arm, none for the 14-joint pair of arms;
+    // an explicit dynamic_domain is kept either way
+    for (const auto &[name, group, expected] :
+         {std::tuple{"panda_torso", "arm_with_torso", true}, std::tuple{"dual_panda", "both_arms", false}})
+    {
+        const auto robot = testRobot(name, group);
+        ompl::geometric::SimpleSetup ss(createStateSpace(*robot));
+        const auto &si = ss.getSpaceInformation();
+        for (const char *set : {"", "0", "1"})
+        {
+            std::map<std::string, std::string> params;
+            if (*set != '\0')
+                params["dynamic_domain"] = set;
+            auto planner = std::dynamic_pointer_cast<VectorizedRRTConnect>(
+                PlannerRegistry::instance().create("VectorizedRRTConnect", si, params));
+            ASSERT_TRUE(planner);
+            planner->setup();
+            EXPECT_EQ(planner->getDynamicDomain(), *set == '\0' ? expected : *set == '1') << name << " '" << set << "'";
+        }
     }
 }

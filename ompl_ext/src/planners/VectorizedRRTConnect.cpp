@@ -93,6 +93,8 @@ namespace ropras::ompl_ext
                         " dimensions (the state space " + space->getName() + " has " +
                         std::to_string(space->getDimension()) + ")");
         dof_ = space->getDimension();
+        if (!dynamicDomainSet_)
+            dynamicDomain_ = dof_ <= DYNAMIC_DOMAIN_MAX_DOF;
         lower_ = space->getBounds().low;
         upper_ = space->getBounds().high;
         // the sample transform runs 4 joints at a time: its arrays and buffers are padded to a multiple of 4

@@ -30,7 +30,8 @@ namespace ropras::ompl_ext
         - dynamic domain: each node has a radius; samples farther than it from their nearest node are
           rejected; a node's radius is set to `dd_radius` (default 5 rad, the lowest median cost per solve over
           the MotionBenchMaker Panda set, doc/benchmarks.md) when an extension from it first fails, then shrinks
-          on each failure and grows on each success (`dynamic_domain`, `dd_radius`, `dd_alpha`, `dd_min_radius`);
+          on each failure and grows on each success (`dynamic_domain`, by default on up to 8 planning joints and
+          off above, `dd_radius`, `dd_alpha`, `dd_min_radius`);
         - connection: the other tree greedily extends toward each new node in ceil(d / `range`) equal steps (d:
           the remaining distance; no short last step), from its nearest node first and then from each node it
           just added (no nearest-neighbour search per step);
@@ -53,6 +54,9 @@ namespace ropras::ompl_ext
     class VectorizedRRTConnect : public ompl::base::Planner
     {
     public:
+        /// the most planning joints for which the dynamic domain is on by default (see setDynamicDomain)
+        static constexpr std::size_t DYNAMIC_DOMAIN_MAX_DOF = 8;
+
         explicit VectorizedRRTConnect(const ompl::base::SpaceInformationPtr &si);
         ~VectorizedRRTConnect() override;
 
@@ -67,7 +71,15 @@ namespace ropras::ompl_ext
         bool getHalton() const { return useHalton_; }
         void setBalance(bool on) { balance_ = on; }
         bool getBalance() const { return balance_; }
-        void setDynamicDomain(bool on) { dynamicDomain_ = on; }
+        /** \brief Dynamic domain on or off (parameter "dynamic_domain"). Unless set, setup() chooses: on for at most
+            DYNAMIC_DOMAIN_MAX_DOF planning joints, off above (measured on MotionBenchMaker problems: on helps the
+            7-joint Panda and is neutral on the 8-joint Fetch; on the 14-joint Baxter it solved 68 % of 50 problems
+            within 1 s against 100 % off, doc/benchmarks.md). getDynamicDomain() tells the choice after setup(). */
+        void setDynamicDomain(bool on)
+        {
+            dynamicDomain_ = on;
+            dynamicDomainSet_ = true;
+        }
         bool getDynamicDomain() const { return dynamicDomain_; }
         void setDynamicDomainRadius(double r) { ddRadius_ = r; }
         double getDynamicDomainRadius() const { return ddRadius_; }
@@ -145,6 +157,7 @@ namespace ropras::ompl_ext
         bool useHalton_{true};
         bool balance_{true};
         bool dynamicDomain_{true};
+        bool dynamicDomainSet_{false};  ///< setDynamicDomain() was called: setup() keeps the choice
         double ddRadius_{5.0};
         double ddAlpha_{1.0e-4};
         double ddMinRadius_{1.0};
