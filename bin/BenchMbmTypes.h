@@ -14,7 +14,7 @@ namespace ropras::bin::mbm
 {
     struct Args
     {
-        std::string urdf, srdf, meshUrdf, problems, json, omplLog;
+        std::string urdf, srdf, meshUrdf, problems, json, omplLog, clock{"wall"};
         std::vector<std::string> planners{"RRTConnect"}, categories, checkers;
         std::vector<std::string> params;
         unsigned repeat{1}, seed{1}, limit{0};

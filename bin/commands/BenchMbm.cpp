@@ -20,6 +20,7 @@
 #include <sstream>
 
 #include "ArgumentChecks.h"
+#include "BenchClock.h"
 #include "BenchMbmTypes.h"
 #include "CommandRegistry.h"
 #include "OmplBenchmarkLog.h"
@@ -212,7 +213,8 @@ namespace
     }
 
     /// one solve under the time limit or the first exact solution, timed; simplified when asked
-    Run solveOnce(const Args &a, ompl::geometric::SimpleSetup &ss, const Problem &problem)
+    Run solveOnce(const Args &a, const ropras::bin::BenchClock &clock, ompl::geometric::SimpleSetup &ss,
+                  const Problem &problem)
     {
         ss.clear();
         Run run;
@@ -226,14 +228,33 @@ namespace
         // they saturate instead of overflowing.
         timespec start{};
         clock_gettime(CLOCK_MONOTONIC, &start);
-        const std::int64_t deadline = static_cast<std::int64_t>(start.tv_sec) * 1000000000 + start.tv_nsec +
-                                      static_cast<std::int64_t>(std::min(a.time, 1e9) * 1e9);
+        std::int64_t deadline = static_cast<std::int64_t>(start.tv_sec) * 1000000000 + start.tv_nsec +
+                                static_cast<std::int64_t>(std::min(a.time, 1e9) * 1e9);
         const ob::ProblemDefinition *pdef = ss.getProblemDefinition().get();
+        // --clock cpu: the limit is this thread's CPU time. The condition still polls the coarse wall clock; when
+        // the wall deadline has passed it reads the CPU time once and, while the limit is not used up, moves the
+        // deadline by the CPU time left (a thread that waited for a core gets that time back).
+        const double cpuLimitNs = a.clock == "cpu" ? std::min(a.time, 1e9) * 1e9 : 0.0;
+        const double cpuStartNs = a.clock == "cpu" ? clock.nowNs() : 0.0;
         const ob::PlannerTerminationCondition ptc(
-            [deadline, pdef] { return pdef->hasExactSolution() || coarseNanoseconds() > deadline; });
-        const auto t0 = Clock::now();
+            [deadline, pdef, cpuLimitNs, cpuStartNs, &clock]() mutable
+            {
+                if (pdef->hasExactSolution())
+                    return true;
+                const std::int64_t now = coarseNanoseconds();
+                if (now <= deadline)
+                    return false;
+                if (cpuLimitNs <= 0.0)
+                    return true;
+                const double left = cpuLimitNs - (clock.nowNs() - cpuStartNs);
+                if (left <= 0.0)
+                    return true;
+                deadline = now + static_cast<std::int64_t>(left);
+                return false;
+            });
+        const double t0 = clock.nowNs();
         const ob::PlannerStatus status = ss.solve(ptc);
-        run.planUs = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
+        run.planUs = (clock.nowNs() - t0) * 1e-3;
         run.status = static_cast<int>(ob::PlannerStatus::StatusType(status));
         run.solved = status == ob::PlannerStatus::EXACT_SOLUTION;
         if (run.solved)
@@ -241,9 +262,9 @@ namespace
             run.length = ss.getSolutionPath().length();
             if (a.simplify)
             {
-                const auto s0 = Clock::now();
+                const double s0 = clock.nowNs();
                 ss.simplifySolution();
-                run.simplifyUs = std::chrono::duration<double, std::micro>(Clock::now() - s0).count();
+                run.simplifyUs = (clock.nowNs() - s0) * 1e-3;
             }
             run.simplifiedLength = ss.getSolutionPath().length();
         }
@@ -371,6 +392,7 @@ namespace
     {
         for (const auto &[option, out] : {std::pair{"--json", a.json}, std::pair{"--ompl-log", a.omplLog}})
             ropras::bin::refuseOverwritingInputs(option, out, {a.urdf, a.srdf, a.meshUrdf});
+        const ropras::bin::BenchClock clock(a.clock, "bench-mbm");
         ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
         ompl::RNG::setSeed(a.seed);
         const auto params = ropras::bin::keyValueOptions(a.params, "--param");
@@ -470,7 +492,7 @@ namespace
                         ss.getPlanner()->params().getParams(plannerSettings[plannerName]);
                     for (unsigned r = 0; r < a.repeat; ++r)
                     {
-                        results[checkerName][plannerName].push_back(solveOnce(a, ss, problem));
+                        results[checkerName][plannerName].push_back(solveOnce(a, clock, ss, problem));
                         progress.runDone(plannerName, problem);
                     }
                 }
@@ -490,9 +512,9 @@ namespace
                 invalidList.push_back({{"category", p.category}, {"problem", p.index}, {"reason", p.invalid}});
         out["invalid_problems"] = invalidList;
         out["config"] = {
-            {"urdf", a.urdf},         {"srdf", a.srdf},   {"mesh_urdf", a.meshUrdf}, {"problems", a.problems},
-            {"repeat", a.repeat},     {"time_s", a.time}, {"seed", a.seed},          {"resolution", a.resolution},
-            {"total_s", totalSeconds}};
+            {"urdf", a.urdf},     {"srdf", a.srdf},         {"mesh_urdf", a.meshUrdf}, {"problems", a.problems},
+            {"repeat", a.repeat}, {"time_s", a.time},       {"seed", a.seed},          {"resolution", a.resolution},
+            {"clock", a.clock},   {"total_s", totalSeconds}};
         if (!a.json.empty())
         {
             std::ofstream f(a.json);
@@ -531,6 +553,10 @@ namespace
         app.add_option("--resolution", a->resolution, "motion-check joint step (rad)")
             ->capture_default_str()
             ->check(ropras::bin::POSITIVE_NUMBER);
+        app.add_option("--clock", a->clock,
+                       "planning times and the --time limit by wall (steady clock) or cpu (this thread's CPU time: use "
+                       "on a loaded machine)")
+            ->capture_default_str();
         app.add_option("--seed", a->seed, "OMPL random seed")->capture_default_str()->check(ropras::bin::SEED32);
         app.add_flag("!--no-simplify", a->simplify, "skip path simplification");
         app.add_option("--json", a->json, "write the results as JSON");

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <limits>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "../../ompl_ext/src/planners/NodeBlocks.h"
 #include "PointRobotUrdf.h"
@@ -209,6 +211,13 @@ TEST(VectorizedRRTConnect, RejectsBadSettings)
     EXPECT_THROW(c.setup->setup(), ropras::Error);
     planner->setRange(-1.0);
     EXPECT_THROW(planner->setup(), ropras::Error);
+    planner->setRange(0.5);
+    planner->setTreeRatio(std::numeric_limits<double>::quiet_NaN());
+    EXPECT_THROW(planner->setup(), ropras::Error);
+    planner->setTreeRatio(-0.5);
+    EXPECT_THROW(planner->setup(), ropras::Error);
+    planner->setTreeRatio(1.0);
+    EXPECT_NO_THROW(planner->setup());
 }
 
 TEST(VectorizedRRTConnect, EveryTreeEdgeIsAtMostRangeAndValid)
@@ -216,27 +225,37 @@ TEST(VectorizedRRTConnect, EveryTreeEdgeIsAtMostRangeAndValid)
     // Extensions take one step of range, connections ceil(d / range) equal steps: no edge of either tree is longer
     // than range, every edge is a valid motion, and the solution path (tree edges only) is valid.
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
-    for (const char *range : {"0.07", "0.15", "0.4"})
-        for (const char *seed : {"3", "17"})
-        {
-            PlanningContext c = pointContext(true, {{"seed", seed}, {"range", range}, {"direct", "0"}});
-            ASSERT_EQ(solve(c), ompl::base::PlannerStatus::EXACT_SOLUTION) << "range " << range << " seed " << seed;
-            EXPECT_TRUE(c.setup->getSolutionPath().check());
-            ompl::base::PlannerData data(c.spaceInformation());
-            c.setup->getPlannerData(data);
-            ASSERT_GT(data.numEdges(), 2u);
-            const double r = std::stod(range);
-            const auto &si = c.spaceInformation();
-            for (unsigned v = 0; v < data.numVertices(); ++v)
+    // the balancing and connection variants too: VAMP's tree ratio, connections outside the dynamic domain
+    std::vector<unsigned> vertices[3];
+    const std::pair<std::string, std::string> variants[3] = {
+        {"tree_ratio", "0"}, {"tree_ratio", "1"}, {"dd_connect", "0"}};
+    for (int variant = 0; variant < 3; ++variant)
+        for (const char *range : {"0.07", "0.15", "0.4"})
+            for (const char *seed : {"3", "17"})
             {
-                std::vector<unsigned> out;
-                data.getEdges(v, out);
-                for (unsigned w : out)
+                PlanningContext c =
+                    pointContext(true, {{"seed", seed}, {"range", range}, {"direct", "0"}, variants[variant]});
+                ASSERT_EQ(solve(c), ompl::base::PlannerStatus::EXACT_SOLUTION) << "range " << range << " seed " << seed;
+                EXPECT_TRUE(c.setup->getSolutionPath().check());
+                ompl::base::PlannerData data(c.spaceInformation());
+                c.setup->getPlannerData(data);
+                ASSERT_GT(data.numEdges(), 2u);
+                const double r = std::stod(range);
+                const auto &si = c.spaceInformation();
+                for (unsigned v = 0; v < data.numVertices(); ++v)
                 {
-                    const ompl::base::State *a = data.getVertex(v).getState(), *b = data.getVertex(w).getState();
-                    EXPECT_LE(si->distance(a, b), r * (1.0 + 1e-9)) << "range " << range << " seed " << seed;
-                    EXPECT_TRUE(si->checkMotion(a, b)) << "range " << range << " seed " << seed;
+                    std::vector<unsigned> out;
+                    data.getEdges(v, out);
+                    for (unsigned w : out)
+                    {
+                        const ompl::base::State *a = data.getVertex(v).getState(), *b = data.getVertex(w).getState();
+                        EXPECT_LE(si->distance(a, b), r * (1.0 + 1e-9)) << "range " << range << " seed " << seed;
+                        EXPECT_TRUE(si->checkMotion(a, b)) << "range " << range << " seed " << seed;
+                    }
                 }
+                vertices[variant].push_back(data.numVertices());
             }
-        }
+    // VAMP's balancing rule grows other trees than the default (dd_connect changes nothing in this open plane: its
+    // connections do not fail)
+    EXPECT_NE(vertices[1], vertices[0]);
 }

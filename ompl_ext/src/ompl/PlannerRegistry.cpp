@@ -49,6 +49,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "planners/JointRRTConnect.h"
 #include "ropras/core/Error.h"
 #include "ropras/core/NameList.h"
 
@@ -187,7 +188,7 @@ namespace ropras::ompl_ext
             {"pSBL", make<og::pSBL>()},
             {"RLRT", make<og::RLRT>()},
             {"RRT", make<og::RRT>()},
-            {"RRTConnect", make<og::RRTConnect>()},
+            {"RRTConnect", make<JointRRTConnect>()},  // OMPL's, with SIMD nearest neighbours
             {"RRTsharp", make<og::RRTsharp>()},
             {"RRTstar", make<og::RRTstar>()},
             {"RRTXstatic", make<og::RRTXstatic>()},

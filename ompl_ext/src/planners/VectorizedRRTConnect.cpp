@@ -52,6 +52,10 @@ namespace ropras::ompl_ext
                                       &VectorizedRRTConnect::getDynamicDomainAlpha, "0.:0.0001:1.");
         Planner::declareParam<double>("dd_min_radius", this, &VectorizedRRTConnect::setDynamicDomainMinRadius,
                                       &VectorizedRRTConnect::getDynamicDomainMinRadius, "0.:0.1:10.");
+        Planner::declareParam<bool>("dd_connect", this, &VectorizedRRTConnect::setDynamicDomainConnect,
+                                    &VectorizedRRTConnect::getDynamicDomainConnect, "0,1");
+        Planner::declareParam<double>("tree_ratio", this, &VectorizedRRTConnect::setTreeRatio,
+                                      &VectorizedRRTConnect::getTreeRatio, "0.:0.1:10.");
         Planner::declareParam<bool>("direct", this, &VectorizedRRTConnect::setDirectConnection,
                                     &VectorizedRRTConnect::getDirectConnection, "0,1");
         Planner::declareParam<unsigned>("max_samples", this, &VectorizedRRTConnect::setMaxSamples,
@@ -81,11 +85,16 @@ namespace ropras::ompl_ext
                         ")");
         if (!(range_ > 0.0) || !std::isfinite(range_))
             throw Error("VectorizedRRTConnect: range must be finite and > 0 (got " + std::to_string(range_) + ")");
+        if (!(treeRatio_ >= 0.0) || !std::isfinite(treeRatio_))
+            throw Error("VectorizedRRTConnect: tree_ratio must be finite and >= 0 (got " + std::to_string(treeRatio_) +
+                        ")");
         if (space->getDimension() > NodeBlocks::MAX_DOF)
             throw Error("VectorizedRRTConnect supports at most " + std::to_string(NodeBlocks::MAX_DOF) +
                         " dimensions (the state space " + space->getName() + " has " +
                         std::to_string(space->getDimension()) + ")");
         dof_ = space->getDimension();
+        if (!dynamicDomainSet_)
+            dynamicDomain_ = dof_ <= DYNAMIC_DOMAIN_MAX_DOF;
         lower_ = space->getBounds().low;
         upper_ = space->getBounds().high;
         // the sample transform runs 4 joints at a time: its arrays and buffers are padded to a multiple of 4
@@ -180,7 +189,7 @@ namespace ropras::ompl_ext
     }
 
     std::size_t VectorizedRRTConnect::nearest(const Tree &tree, const double *q, const float *qf, double &distSq,
-                                              bool &rejected) const
+                                              bool &rejected, bool domain) const
     {
         // the float block scan picks the node, the exact distance to it is computed in double
         float distF = 0.0f;
@@ -198,7 +207,7 @@ namespace ropras::ompl_ext
         // the float rounding (floatSlack_, from the joint bounds) the double test would reject too: skip computing
         // it. Closer calls (and every accepted sample) take the exact test in extend().
         rejected = false;
-        if (dynamicDomain_)
+        if (domain)
         {
             const double r = tree.radius[best];
             if (static_cast<double>(distF) > r * r * 1.001 + floatSlack_[0] * r + floatSlack_[1])
@@ -266,10 +275,11 @@ namespace ropras::ompl_ext
     {
         double distSq;
         std::size_t near;
+        const bool domain = dynamicDomain_ && (!connect || ddConnect_);
         if (fromNode < 0)
         {
             bool rejected;
-            near = nearest(tree, target, targetF, distSq, rejected);
+            near = nearest(tree, target, targetF, distSq, rejected, domain);
             if (rejected)
             {
                 reached = false;
@@ -286,7 +296,7 @@ namespace ropras::ompl_ext
         }
         const double dist = std::sqrt(distSq);
         reached = false;
-        if (dynamicDomain_ && fromNode < 0 && dist > tree.radius[near])
+        if (domain && fromNode < 0 && dist > tree.radius[near])
             return -1;
         const double *from = tree.q.data() + near * dof_;
         double *to = scratch_.data();
@@ -305,14 +315,14 @@ namespace ropras::ompl_ext
         }
         if (!motionValid(from, to))
         {
-            if (dynamicDomain_)
+            if (domain)
                 tree.radius[near] = std::isinf(tree.radius[near])
                                         ? ddRadius_
                                         : std::max(tree.radius[near] * (1.0 - ddAlpha_), ddMinRadius_);
             reached = false;
             return -1;
         }
-        if (dynamicDomain_ && !std::isinf(tree.radius[near]))
+        if (domain && !std::isinf(tree.radius[near]))
             tree.radius[near] *= (1.0 + ddAlpha_);
         addNode(tree, to, static_cast<int>(near));
         return static_cast<int>(tree.size() - 1);
@@ -418,8 +428,15 @@ namespace ropras::ompl_ext
                 break;
             ++samples;
 
-            if (balance_)
+            if (balance_ && treeRatio_ <= 0.0)
                 a = trees_[0].size() <= trees_[1].size() ? 0 : 1;
+            else if (balance_)
+            {
+                const double last = static_cast<double>(trees_[a].size());
+                const double other = static_cast<double>(trees_[1 - a].size());
+                if (std::abs(last - other) / last < treeRatio_)
+                    a = 1 - a;
+            }
             Tree &ta = trees_[a];
             Tree &tb = trees_[1 - a];
             sample(sampleBuf, sampleF_.data());

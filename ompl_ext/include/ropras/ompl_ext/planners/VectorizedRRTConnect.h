@@ -30,7 +30,8 @@ namespace ropras::ompl_ext
         - dynamic domain: each node has a radius; samples farther than it from their nearest node are
           rejected; a node's radius is set to `dd_radius` (default 5 rad, the lowest median cost per solve over
           the MotionBenchMaker Panda set, doc/benchmarks.md) when an extension from it first fails, then shrinks
-          on each failure and grows on each success (`dynamic_domain`, `dd_radius`, `dd_alpha`, `dd_min_radius`);
+          on each failure and grows on each success (`dynamic_domain`, by default on up to 8 planning joints and
+          off above, `dd_radius`, `dd_alpha`, `dd_min_radius`);
         - connection: the other tree greedily extends toward each new node in ceil(d / `range`) equal steps (d:
           the remaining distance; no short last step), from its nearest node first and then from each node it
           just added (no nearest-neighbour search per step);
@@ -53,6 +54,9 @@ namespace ropras::ompl_ext
     class VectorizedRRTConnect : public ompl::base::Planner
     {
     public:
+        /// the most planning joints for which the dynamic domain is on by default (see setDynamicDomain)
+        static constexpr std::size_t DYNAMIC_DOMAIN_MAX_DOF = 8;
+
         explicit VectorizedRRTConnect(const ompl::base::SpaceInformationPtr &si);
         ~VectorizedRRTConnect() override;
 
@@ -67,7 +71,15 @@ namespace ropras::ompl_ext
         bool getHalton() const { return useHalton_; }
         void setBalance(bool on) { balance_ = on; }
         bool getBalance() const { return balance_; }
-        void setDynamicDomain(bool on) { dynamicDomain_ = on; }
+        /** \brief Dynamic domain on or off (parameter "dynamic_domain"). Unless set, setup() chooses: on for at most
+            DYNAMIC_DOMAIN_MAX_DOF planning joints, off above (measured on MotionBenchMaker problems: on helps the
+            7-joint Panda and is neutral on the 8-joint Fetch; on the 14-joint Baxter it solved 68 % of 50 problems
+            within 1 s against 100 % off, doc/benchmarks.md). getDynamicDomain() tells the choice after setup(). */
+        void setDynamicDomain(bool on)
+        {
+            dynamicDomain_ = on;
+            dynamicDomainSet_ = true;
+        }
         bool getDynamicDomain() const { return dynamicDomain_; }
         void setDynamicDomainRadius(double r) { ddRadius_ = r; }
         double getDynamicDomainRadius() const { return ddRadius_; }
@@ -75,6 +87,16 @@ namespace ropras::ompl_ext
         double getDynamicDomainAlpha() const { return ddAlpha_; }
         void setDynamicDomainMinRadius(double r) { ddMinRadius_ = r; }
         double getDynamicDomainMinRadius() const { return ddMinRadius_; }
+        /// whether connections take part in the dynamic domain (parameter "dd_connect", default on): a connection
+        /// is refused when its first node's radius is below the distance, and a failed or valid connection step
+        /// shrinks or grows the radius of the node it started from. Off: connections leave radii alone (VAMP's).
+        void setDynamicDomainConnect(bool on) { ddConnect_ = on; }
+        /// balancing rule (parameter "tree_ratio", with balance on): 0 (default) extends the smaller tree in every
+        /// iteration; r > 0 is VAMP's rule: switch to the other tree while |a - b| / a < r (a: the size of the
+        /// tree extended last, b: the other's), i.e. alternate while the sizes are close, else stay on the smaller
+        void setTreeRatio(double r) { treeRatio_ = r; }
+        double getTreeRatio() const { return treeRatio_; }
+        bool getDynamicDomainConnect() const { return ddConnect_; }
         void setDirectConnection(bool on) { direct_ = on; }
         bool getDirectConnection() const { return direct_; }
         void setMaxSamples(unsigned n) { maxSamples_ = n; }
@@ -99,8 +121,9 @@ namespace ropras::ompl_ext
         bool motionValid(const double *a, const double *b);
         bool stateValid(const double *q) const;
         /// \a qf: \a q in float when the caller has it (nullptr: converted here). \a rejected: \a q is clearly
-        /// outside the nearest node's dynamic domain (\a distSq is then not computed)
-        std::size_t nearest(const Tree &tree, const double *q, const float *qf, double &distSq, bool &rejected) const;
+        /// outside the nearest node's dynamic domain (\a distSq is then not computed; only when \a domain)
+        std::size_t nearest(const Tree &tree, const double *q, const float *qf, double &distSq, bool &rejected,
+                            bool domain) const;
         void addNode(Tree &tree, const double *q, int parent);
         /// the next sample into \a out and, in float, into \a outF (for the nearest-neighbour scan)
         void sample(double *out, float *outF);
@@ -134,10 +157,13 @@ namespace ropras::ompl_ext
         bool useHalton_{true};
         bool balance_{true};
         bool dynamicDomain_{true};
+        bool dynamicDomainSet_{false};  ///< setDynamicDomain() was called: setup() keeps the choice
         double ddRadius_{5.0};
         double ddAlpha_{1.0e-4};
         double ddMinRadius_{1.0};
         bool direct_{true};
+        bool ddConnect_{true};
+        double treeRatio_{0.0};
         std::uint64_t motionChecks_{0};  ///< motion checks so far (8 units of work between two PTC evaluations)
         unsigned maxSamples_{0};         ///< 0: unlimited (until the termination condition)
         unsigned seed_{0};               ///< 0: Halton shift from OMPL's RNG
