@@ -4,7 +4,8 @@
 # and at a time budget of a tenth of a second per call (the issue's target: <= 0.1 s per call).
 # Usage: scripts/reproduce-arm-results.sh [OUT_DIR] [EPISODES] (defaults: results-arm/, 30); then
 # `ropras table OUT_DIR/ss-*.jsonl`. Long: about 10-20 s per ROP-RAS3 / R-POMCP episode on one core at 150 sims.
-# Extra run options (e.g. --config waypoint.json) may be given in ARM_EXTRA.
+# Extra run options (e.g. --config delta.json) may be given in ARM_EXTRA; ARM_SEED sets the run seed (default
+# 1000, never used while tuning); ARM_BUDGETS="sims" runs only the 150-simulation rows.
 set -u
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 R=${ROPRAS:-$here/build/bin/ropras}
@@ -16,10 +17,12 @@ run() { # name args...
   local name=$1
   shift
   # shellcheck disable=SC2086
-  "$R" run --episodes "$n" --threads 2 --seed 1 --quiet --out "$name.jsonl" "$@" ${ARM_EXTRA:-} > "$name.table"
+  "$R" run --episodes "$n" --threads 1 --seed "${ARM_SEED:-1000}" --quiet --out "$name.jsonl" "$@" ${ARM_EXTRA:-} > "$name.table"
 }
 SS="--scenario sphere-search"
-for budget in "sims:--sims 150" "time:--plan-time 0.1"; do
+budgets=("sims:--sims 150" "time:--plan-time 0.1")
+[ "${ARM_BUDGETS:-}" = sims ] && budgets=("sims:--sims 150")
+for budget in "${budgets[@]}"; do
   tag=${budget%%:*}
   opt=${budget#*:}
   # shellcheck disable=SC2086
@@ -32,4 +35,4 @@ for budget in "sims:--sims 150" "time:--plan-time 0.1"; do
   run ss-$tag-ropras3-d $SS --solver ropras3 $opt
 done
 "$R" table ss-sims-*.jsonl
-"$R" table ss-time-*.jsonl
+[ "${ARM_BUDGETS:-}" = sims ] || "$R" table ss-time-*.jsonl

@@ -19,11 +19,12 @@ namespace
         std::string recording;
         std::string out;
         std::string steps;
+        std::string armSteps;
         double width{800.0};
     };
 
     /** \brief "0,50,100" -> {0, 50, 100}; throws ropras::Error naming the entry that is not a whole number. */
-    std::vector<std::size_t> stepList(const std::string &text)
+    std::vector<std::size_t> stepList(const std::string &text, const std::string &option = "--steps")
     {
         std::vector<std::size_t> out;
         std::size_t begin = 0;
@@ -35,7 +36,7 @@ namespace
                 !item.empty() && item.size() <= 18 && item.find_first_not_of("0123456789") == std::string::npos;
             if (!digits)
             {
-                throw ropras::Error("--steps \"" + text + "\": \"" + item +
+                throw ropras::Error(option + " \"" + text + "\": \"" + item +
                                     "\" is not a step number (expected e.g. 0,50,100)");
             }
             out.push_back(static_cast<std::size_t>(std::stoull(item)));
@@ -51,6 +52,10 @@ namespace
         if (!o.steps.empty())
         {
             options.beliefSteps = stepList(o.steps);
+        }
+        if (!o.armSteps.empty())
+        {
+            options.armSteps = stepList(o.armSteps, "--arm-steps");
         }
         ropras::bin::refuseOverwritingInputs("--out", o.out, {o.recording});
         const auto recording = ropras::scenarios::loadRecording(o.recording);
@@ -83,6 +88,9 @@ namespace
             ->check(CLI::ExistingFile);
         app.add_option("--out", o->out, "SVG file (default: the recording's name with .svg)");
         app.add_option("--steps", o->steps, "Belief steps to draw, e.g. 0,50,100 (default: every recorded belief)");
+        app.add_option(
+            "--arm-steps", o->armSteps,
+            "Steps at which a recorded robot (an arm) is drawn posed, e.g. 0,20,40 (default: 6 spread evenly)");
         app.add_option("--width", o->width, "Width of the map in pixels")
             ->capture_default_str()
             ->check(ropras::bin::numberCheck(50.0, false, false, "WIDTH >= 50", 100000.0));

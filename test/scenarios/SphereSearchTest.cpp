@@ -11,6 +11,7 @@
 #include <ompl/util/Console.h>
 
 #include "ropras/core/Error.h"
+#include "ropras/scenarios/SvgRenderer.h"
 #include "ropras/scenarios/manipulation/ArmPlanning.h"
 #include "ropras/scenarios/manipulation/SphereSearchScenario.h"
 #include "ropras/scenarios/manipulation/SphereSearchWorld.h"
@@ -204,7 +205,10 @@ namespace ropras::scenarios
 
     TEST(SphereSearchTest, ReferenceMacrosFollowCollisionFreePathsInSteps)
     {
-        const auto &parts = defaultParts();
+        // the dq reading, whose actions are the path's steps (the default waypoint actions are its points)
+        ScenarioOptions options;
+        options.overrides["action_mode"] = "delta";
+        const auto parts = sphereSearchParts(options);
         const auto &model = *parts.model;
         for (const std::string planner : {"VectorizedRRTConnect", "RRTConnect"})
         {
@@ -266,6 +270,105 @@ namespace ropras::scenarios
             EXPECT_TRUE(std::isfinite(result.undiscountedReturn)) << solver;
             EXPECT_EQ(recording["trajectory"].size(), result.steps + 1) << solver;
         }
+    }
+
+    std::size_t occurrences(const std::string &text, const std::string &what)
+    {
+        std::size_t n = 0;
+        for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size()))
+            ++n;
+        return n;
+    }
+
+    // `ropras render` of an arm episode: the recording carries the Panda and its joints per step; the picture poses
+    // every collision sphere of the embedded URDF at each chosen step in the top and the side view, and draws every
+    // recorded ray segment in both.
+    TEST(SphereSearchTest, RenderedEpisodeShowsTheArmAtChosenStepsAndTheRays)
+    {
+        ScenarioOptions options;
+        options.overrides["horizon"] = 6;
+        const auto scenario = makeSphereSearchScenario(options);
+        RunSettings settings;
+        settings.solver = "bplan";
+        settings.params.set("particles", 20);
+        scenario->validate(settings);
+        nlohmann::json recording;
+        const auto result = scenario->runEpisode(settings, 3, &recording, RecordSettings());
+        ASSERT_TRUE(recording.contains("robot"));
+        ASSERT_EQ(recording["robot"]["configurations"].size(), result.steps + 1);
+        const auto &first = recording["robot"]["configurations"][0];
+        ASSERT_EQ(first.size(), ARM_DOF);
+        const std::size_t spheres = defaultParts().model->arm().robot()->spheres().size();
+        ASSERT_GT(spheres, 50u);
+
+        SvgOptions svgOptions;
+        svgOptions.armSteps = {0, result.steps};
+        std::string svg = renderSvg(recording, svgOptions);
+        EXPECT_EQ(occurrences(svg, "class=\"arm-sphere\""), 2 * 2 * spheres) << "2 steps x 2 views";
+        EXPECT_EQ(occurrences(svg, "<g class=\"arm-pose\" data-step=\"0\""), 2u);
+        EXPECT_EQ(occurrences(svg, "class=\"ray\""), 0u) << "no rays recorded";
+        EXPECT_NE(svg.find("data-label=\"end_effector\""), std::string::npos);
+
+        // default: up to 6 steps spread over the episode
+        svg = renderSvg(recording, SvgOptions());
+        EXPECT_EQ(occurrences(svg, "class=\"arm-sphere\""), 2 * std::min<std::size_t>(6, result.steps + 1) * spheres);
+
+        recording["rays"] = {{{"step", 0}, {"segments", {{{0.3, 0.0, 0.5}, {0.3, 0.0, 0.0}}}}},
+                             {{"step", 1}, {"segments", {{{0.3, 0.0, 0.5}, {0.8, 0.0, 0.5}}, {{0, 0, 0}, {0, 1, 0}}}}}};
+        svg = renderSvg(recording, svgOptions);
+        EXPECT_EQ(occurrences(svg, "class=\"ray\""), 2u * 3u) << "3 segments x 2 views";
+
+        svgOptions.armSteps = {result.steps + 1};
+        try
+        {
+            renderSvg(recording, svgOptions, "ep.json");
+            ADD_FAILURE() << "an arm step past the end must throw";
+        }
+        catch (const Error &e)
+        {
+            EXPECT_NE(std::string(e.what()).find("arm step " + std::to_string(result.steps + 1)), std::string::npos)
+                << e.what();
+        }
+        recording["robot"]["configurations"][0] = {0.0, 1.0};
+        EXPECT_THROW(renderSvg(recording, SvgOptions(), "ep.json"), Error);
+    }
+
+    // A particle that noise pushed inside the planning margin (valid in the true cage, invalid in the grown one) is
+    // planned for in the true cage; any other particle in the reference policy's grown cage.
+    TEST(SphereSearchTest, ParticlesInsideThePlanningMarginPlanInTheTrueWorld)
+    {
+        const auto &parts = defaultParts();
+        const SphereSearchModel &model = *parts.model;
+        auto arm = sharedPandaArm(model.config().endEffector);
+        const auto grown = sphereSearchEnvironment(model.config(), 0.03);
+        ArmPlanningAdapter adapter(std::make_unique<ArmGoalSampler>(arm, grown, ArmGoalSampler::Settings(), 1),
+                                   model.config().step, 10, true, model.environment(), grown, arm);
+        State start = startState(model);
+        EXPECT_EQ(adapter.environment(start), nullptr) << "the start is clear of the margin";
+        core::Rng rng(11);
+        std::size_t inside = 0;
+        for (int attempt = 0; attempt < 20000 && inside < 5; ++attempt)
+        {
+            State s = start;
+            for (std::size_t j = 0; j < ARM_DOF; ++j)
+                s.q[j] = rng.uniform(arm->lower(j), arm->upper(j));
+            const bool trueValid = arm->checker()->isValid(*model.environment(), s.q);
+            const bool grownValid = arm->checker()->isValid(*grown, s.q);
+            const auto env = adapter.environment(s);
+            if (trueValid && !grownValid)
+            {
+                ++inside;
+                EXPECT_EQ(env, model.environment());
+            }
+            else if (grownValid)
+            {
+                EXPECT_EQ(env, nullptr);
+            }
+        }
+        EXPECT_EQ(inside, 5u) << "random configurations inside the 3 cm margin were found";
+        EXPECT_THROW(ArmPlanningAdapter(std::make_unique<ArmGoalSampler>(arm, grown, ArmGoalSampler::Settings(), 1),
+                                        0.1, 10, true, nullptr, grown, arm),
+                     Error);
     }
 
     TEST(SphereSearchTest, BadConfigurationValuesNameTheKey)

@@ -77,83 +77,22 @@ namespace ropras::scenarios
         void drawRobot(detail::ViewDocument &view, const nlohmann::json &robot, std::size_t frames, const Reader &r,
                        const std::string &folder)
         {
-            if (!robot.is_object() || !robot.contains("urdf") || !robot["urdf"].is_string() ||
-                !robot.contains("configurations") || !robot["configurations"].is_array())
-            {
-                r.fail("key \"robot\"",
-                       "must be {\"urdf\": FILE, \"configurations\": [[q...], ...]}, not " + Reader::clip(robot));
-            }
-            const std::string urdf = robot["urdf"].get<std::string>();
-            const std::string embedded = "embedded:";
-            ompl_ext::RobotModel::Options options;
-            options.disableAlwaysColliding = false;  // the viewer only poses spheres
-            std::shared_ptr<const ompl_ext::RobotModel> model;
-            if (urdf.compare(0, embedded.size(), embedded) == 0)
-            {
-                const std::string key = urdf.substr(embedded.size());
-                model = ompl_ext::RobotModel::fromUrdfString(embeddedFile(key), ".", key, "", options);
-            }
-            else
-            {
-                const std::string path = !urdf.empty() && urdf[0] == '/' ? urdf : folder + "/" + urdf;
-                model = ompl_ext::RobotModel::fromUrdfFile(path, "", options);
-            }
-            const auto &list = robot["configurations"];
-            if (list.size() != frames)
-            {
-                r.fail("robot.configurations", "has " + std::to_string(list.size()) + " entries, the trajectory " +
-                                                   std::to_string(frames) + " steps");
-            }
-            std::vector<std::vector<double>> qs(frames, std::vector<double>(model->dof()));
-            for (std::size_t t = 0; t < frames; ++t)
-            {
-                const std::string key = "robot.configurations[" + std::to_string(t) + "]";
-                if (!list[t].is_array() || list[t].size() != model->dof())
-                {
-                    r.fail(key, "must list the " + std::to_string(model->dof()) + " joint values of " + urdf +
-                                    ", not " + Reader::clip(list[t]));
-                }
-                for (std::size_t k = 0; k < model->dof(); ++k)
-                {
-                    qs[t][k] = r.number(list[t][k], key + "[" + std::to_string(k) + "]");
-                }
-            }
+            const detail::RecordedRobot recorded = detail::readRecordedRobot(robot, frames, r, folder);
             std::vector<double> radii;
             std::size_t attached = 0;
-            const auto centres = detail::robotSphereFrames(*model, nullptr, qs, radii, attached);
+            const auto centres =
+                detail::robotSphereFrames(*recorded.model, nullptr, recorded.configurations, radii, attached);
             view.body("robot spheres", "#5c6bc0", radii, centres);
         }
 
         void drawRays(detail::ViewDocument &view, const nlohmann::json &rays, const Reader &r)
         {
-            if (!rays.is_array())
-            {
-                r.fail("key \"rays\"", "must be an array of {\"step\", \"segments\"}");
-            }
             std::vector<std::size_t> steps;
             std::vector<std::vector<std::array<Vec3, 2>>> all;
-            for (std::size_t i = 0; i < rays.size(); ++i)
+            for (auto &entry : detail::readRecordedRays(rays, r))
             {
-                const std::string key = "rays[" + std::to_string(i) + "]";
-                const auto &item = rays[i];
-                if (!item.is_object() || !item.contains("step") || !item["step"].is_number_integer() ||
-                    item["step"].get<std::int64_t>() < 0 || !item.contains("segments") || !item["segments"].is_array())
-                {
-                    r.fail(key, "must be {\"step\": n, \"segments\": [[origin, end], ...]}, not " + Reader::clip(item));
-                }
-                std::vector<std::array<Vec3, 2>> segments;
-                for (std::size_t k = 0; k < item["segments"].size(); ++k)
-                {
-                    const auto &s = item["segments"][k];
-                    const std::string sk = key + ".segments[" + std::to_string(k) + "]";
-                    if (!s.is_array() || s.size() != 2)
-                    {
-                        r.fail(sk, "must be [origin, end], not " + Reader::clip(s));
-                    }
-                    segments.push_back({r.point(s[0], sk), r.point(s[1], sk)});
-                }
-                steps.push_back(item["step"].get<std::size_t>());
-                all.push_back(std::move(segments));
+                steps.push_back(entry.step);
+                all.push_back(std::move(entry.segments));
             }
             view.rays(steps, all);
         }

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <map>
 
+#include "ropras/scenarios/ScenarioRegistry.h"
+
 namespace ropras::scenarios::detail
 {
     namespace
@@ -236,5 +238,86 @@ namespace ropras::scenarios::detail
         }
         goals.push_back(r.shape(g, "scene.goal"));
         return goals;
+    }
+
+    RecordedRobot readRecordedRobot(const nlohmann::json &robot, std::size_t frames, const Reader &r,
+                                    const std::string &folder)
+    {
+        if (!robot.is_object() || !robot.contains("urdf") || !robot["urdf"].is_string() ||
+            !robot.contains("configurations") || !robot["configurations"].is_array())
+        {
+            r.fail("key \"robot\"",
+                   "must be {\"urdf\": FILE, \"configurations\": [[q...], ...]}, not " + Reader::clip(robot));
+        }
+        const std::string urdf = robot["urdf"].get<std::string>();
+        const std::string embedded = "embedded:";
+        ompl_ext::RobotModel::Options options;
+        options.disableAlwaysColliding = false;  // only poses spheres
+        RecordedRobot out;
+        if (urdf.compare(0, embedded.size(), embedded) == 0)
+        {
+            const std::string key = urdf.substr(embedded.size());
+            out.model = ompl_ext::RobotModel::fromUrdfString(embeddedFile(key), ".", key, "", options);
+        }
+        else
+        {
+            const std::string path = !urdf.empty() && urdf[0] == '/' ? urdf : folder + "/" + urdf;
+            out.model = ompl_ext::RobotModel::fromUrdfFile(path, "", options);
+        }
+        const auto &list = robot["configurations"];
+        if (list.size() != frames)
+        {
+            r.fail("robot.configurations", "has " + std::to_string(list.size()) + " entries, the trajectory " +
+                                               std::to_string(frames) + " steps");
+        }
+        const std::size_t dof = out.model->dof();
+        out.configurations.assign(frames, std::vector<double>(dof));
+        for (std::size_t t = 0; t < frames; ++t)
+        {
+            const std::string key = "robot.configurations[" + std::to_string(t) + "]";
+            if (!list[t].is_array() || list[t].size() != dof)
+            {
+                r.fail(key, "must list the " + std::to_string(dof) + " joint values of " + urdf + ", not " +
+                                Reader::clip(list[t]));
+            }
+            for (std::size_t k = 0; k < dof; ++k)
+            {
+                out.configurations[t][k] = r.number(list[t][k], key + "[" + std::to_string(k) + "]");
+            }
+        }
+        return out;
+    }
+
+    std::vector<RecordedRays> readRecordedRays(const nlohmann::json &rays, const Reader &r)
+    {
+        if (!rays.is_array())
+        {
+            r.fail("key \"rays\"", "must be an array of {\"step\", \"segments\"}");
+        }
+        std::vector<RecordedRays> out;
+        for (std::size_t i = 0; i < rays.size(); ++i)
+        {
+            const std::string key = "rays[" + std::to_string(i) + "]";
+            const auto &item = rays[i];
+            if (!item.is_object() || !item.contains("step") || !item["step"].is_number_integer() ||
+                item["step"].get<std::int64_t>() < 0 || !item.contains("segments") || !item["segments"].is_array())
+            {
+                r.fail(key, "must be {\"step\": n, \"segments\": [[origin, end], ...]}, not " + Reader::clip(item));
+            }
+            RecordedRays entry;
+            entry.step = item["step"].get<std::size_t>();
+            for (std::size_t k = 0; k < item["segments"].size(); ++k)
+            {
+                const auto &s = item["segments"][k];
+                const std::string sk = key + ".segments[" + std::to_string(k) + "]";
+                if (!s.is_array() || s.size() != 2)
+                {
+                    r.fail(sk, "must be [origin, end], not " + Reader::clip(s));
+                }
+                entry.segments.push_back({r.point(s[0], sk), r.point(s[1], sk)});
+            }
+            out.push_back(std::move(entry));
+        }
+        return out;
     }
 }  // namespace ropras::scenarios::detail

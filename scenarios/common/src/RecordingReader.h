@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ropras/core/Error.h"
+#include "ropras/ompl_ext/model/RobotModel.h"
 
 namespace ropras::scenarios::detail
 {
@@ -203,6 +204,30 @@ namespace ropras::scenarios::detail
 
     /** \brief The scene's goal: one shape or a list of shapes (empty when the scene has none). */
     std::vector<Shape> sceneGoals(const nlohmann::json &scene, const Reader &r);
+
+    /** \brief A recording's key "robot" read: the robot of its URDF ("embedded:KEY" or a file relative to
+        \a folder) and its planning-joint values per step. */
+    struct RecordedRobot
+    {
+        std::shared_ptr<const ompl_ext::RobotModel> model;
+        std::vector<std::vector<double>> configurations;  ///< per step, model->dof() values
+    };
+
+    /** \brief Reads \a robot (`{"urdf", "configurations"}`), one configuration per step of the \a frames of the
+        trajectory; throws ropras::Error naming \a r's source and the key for a malformed entry. */
+    RecordedRobot readRecordedRobot(const nlohmann::json &robot, std::size_t frames, const Reader &r,
+                                    const std::string &folder);
+
+    /** \brief The segments of a recording's key "rays" at one step. */
+    struct RecordedRays
+    {
+        std::size_t step{0};
+        std::vector<std::array<Vec, 2>> segments;  ///< origin, end
+    };
+
+    /** \brief Reads \a rays (`[{"step": n, "segments": [[origin, end], ...]}, ...]`); throws ropras::Error naming
+        \a r's source and the entry for a malformed one. */
+    std::vector<RecordedRays> readRecordedRays(const nlohmann::json &rays, const Reader &r);
 }  // namespace ropras::scenarios::detail
 
 #endif

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "RecordingReader.h"
+#include "SvgArm.h"
 #include "SvgFootprints.h"
 #include "SvgPicture.h"
 #include "ropras/core/Error.h"
@@ -103,6 +104,8 @@ namespace ropras::scenarios
             const Reader &r;
             double robotRadius;
             std::size_t lastStep;
+            const detail::ArmPoses &arm;
+            const std::vector<detail::RecordedRays> &rays;
         };
 
         void drawView(std::ostringstream &svg, const SvgFrame &f, const ViewParts &p, bool main,
@@ -184,6 +187,9 @@ namespace ropras::scenarios
                 }
                 svg << "</g>\n";
             }
+            // the arm posed at the chosen steps and the recorded rays, under the path lines
+            detail::drawArm(svg, f, p.arm, main);
+            detail::drawRays(svg, f, p.rays, main);
             // bodies along the paths (a mobile base's footprint, a pedestrian's disc), under the path lines; top view
             if (main)
             {
@@ -238,7 +244,8 @@ namespace ropras::scenarios
             detail::drawAxes(svg, f);
         }
 
-        std::vector<detail::LegendEntry> legendEntries(const Recording &rec, bool beliefs, const Reader &r)
+        std::vector<detail::LegendEntry> legendEntries(const Recording &rec, bool beliefs, bool arm, bool rays,
+                                                       const Reader &r)
         {
             std::vector<detail::LegendEntry> legend;
             for (const char *key : {"observation_zones", "landmarks", "light", "danger_zones", "walls", "obstacles"})
@@ -256,6 +263,10 @@ namespace ropras::scenarios
                 legend.push_back({"starts", detail::layerColour("starts", 0)});
             if (beliefs)
                 legend.push_back({"belief particles (colour: time)", detail::timeColour(0.5)});
+            if (arm)
+                legend.push_back({"robot spheres at chosen steps (colour: time)", detail::timeColour(0.25)});
+            if (rays)
+                legend.push_back({"rays", "#d32f2f"});
             for (std::size_t k = 0; k < rec.labels.size(); ++k)
                 legend.push_back({rec.labels[k], detail::labelColour(rec.labels[k], k)});
             return legend;
@@ -312,7 +323,13 @@ namespace ropras::scenarios
         const bool sideView = is3d && rec.bounds.hi[2] > rec.bounds.lo[2];
         const double viewsBottom = (sideView ? side.top + side.height() : top.top + top.height()) + detail::AXIS_BELOW;
         const double totalWidth = top.left + top.width() + 24.0;
-        const auto legend = legendEntries(rec, !beliefs.empty(), r);
+        const auto slash = source.rfind('/');
+        const std::string folder = slash == std::string::npos ? "." : source.substr(0, slash);
+        const detail::ArmPoses arm = detail::armPoses(recording, rec.paths.front().size(), options.armSteps, r, folder);
+        const std::vector<detail::RecordedRays> rays = recording.contains("rays")
+                                                           ? detail::readRecordedRays(recording["rays"], r)
+                                                           : std::vector<detail::RecordedRays>();
+        const auto legend = legendEntries(rec, !beliefs.empty(), !arm.steps.empty(), !rays.empty(), r);
         detail::Legend placed = detail::layoutLegend(legend, top.left, viewsBottom + 14.0, totalWidth - 12.0);
         const double gradientHeight = beliefs.empty() ? 0.0 : 30.0;
         const double totalHeight = placed.bottom + gradientHeight + 12.0;
@@ -340,7 +357,7 @@ namespace ropras::scenarios
                      : std::string("top view (x, y)"))
             << "; arrows show the direction of travel, a filled disc the end</text>\n";
 
-        const ViewParts parts{rec, beliefs, r, robotRadius, lastStep};
+        const ViewParts parts{rec, beliefs, r, robotRadius, lastStep, arm, rays};
         detail::LabelPlacer labels(top.left, top.top, top.left + top.width(), top.top + top.height());
         drawView(svg, top, parts, true, labels);
         if (sideView)

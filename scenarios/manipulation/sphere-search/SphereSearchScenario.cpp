@@ -72,7 +72,7 @@ namespace ropras::scenarios
         parts.defaultPlanSeconds = config.planSeconds;
         parts.defaults = config.defaults;
         parts.model = model;
-        parts.referencePolicy = [config, arm, planningEnv, space](
+        parts.referencePolicy = [config, arm, model, planningEnv, space](
                                     const RunSettings &settings, const pomdp::ParameterMap &params,
                                     std::uint64_t seed) -> std::unique_ptr<pomdp::ReferencePolicy<SphereSearchModel>>
         {
@@ -90,9 +90,15 @@ namespace ropras::scenarios
             auto sampler = std::make_unique<ArmGoalSampler>(arm, planningEnv, ik, seed ^ 0x5bd1e995ULL);
             const std::size_t macroLength = params.getCount("macro_length", 10);
             auto adapter = std::make_shared<const ArmPlanningAdapter>(std::move(sampler), config.step, macroLength,
-                                                                      config.waypointActions);
-            return std::make_unique<pomdp::OmplReferencePolicy<SphereSearchModel, ArmTarget>>(
+                                                                      config.waypointActions, model->environment(),
+                                                                      planningEnv, arm);
+            auto policy = std::make_unique<pomdp::OmplReferencePolicy<SphereSearchModel, ArmTarget>>(
                 adapter, std::move(heuristic), arm->robot(), planningEnv, planner);
+            pomdp::PathCache::Settings reuse;
+            reuse.radius = params.get("path_reuse", 0.0);
+            reuse.pathsPerTarget = params.getCount("path_reuse_paths", reuse.pathsPerTarget);
+            policy->setPathCache(reuse);
+            return policy;
         };
         parts.world = [model]() -> std::unique_ptr<pomdp::World<SphereSearchModel>>
         { return std::make_unique<SphereSearchWorld>(model); };
@@ -104,6 +110,10 @@ namespace ropras::scenarios
             out.push_back(Point3{g[0], g[1], g[2]});
         };
         parts.pointLabels = {"end_effector", "goal"};
+        // the arm itself: `ropras render` and `ropras view` pose its collision spheres from the joints per step
+        parts.robotUrdf = "robots/panda/panda.urdf";
+        parts.configuration = [](const SphereSearchModel::State &s, std::vector<double> &q)
+        { q.assign(s.q, s.q + ARM_DOF); };
         parts.scene = sphereSearchScene(config, *model);
         return parts;
     }

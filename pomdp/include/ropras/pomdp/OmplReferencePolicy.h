@@ -12,6 +12,7 @@
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/motion/JointSteps.h"
 #include "ropras/pomdp/OmplPathPlanner.h"
+#include "ropras/pomdp/PathCache.h"
 #include "ropras/pomdp/ReferencePolicy.h"
 #include "ropras/pomdp/SamplingHeuristic.h"
 
@@ -96,6 +97,7 @@ namespace ropras::pomdp
             std::size_t succeeded{0};         ///< macros returned
             std::size_t noTarget{0};          ///< the heuristic or targetConfiguration() failed
             std::size_t conversionFailed{0};  ///< pathToMacroAction() failed or produced nothing
+            std::size_t reused{0};            ///< macros cut from a kept path (PathCache), no plan run
             double seconds{0.0};              ///< wall-clock time in sample()
             std::size_t failed() const { return requested - succeeded; }
         };
@@ -131,6 +133,18 @@ namespace ropras::pomdp
         std::string name() const override { return heuristic_->name() + "+ompl(" + planner_->settings().planner + ")"; }
 
         const Statistics &statistics() const { return statistics_; }
+
+        /** \brief Opt-in experience reuse (PathCache: "plan once, cut many macro-actions"): before planning,
+            a kept path toward the same target configuration that passes within \a settings.radius of the
+            start is continued (re-checked in the particle's environment); every new plan is kept. A radius
+            of 0 switches it off (the default). Throws ropras::Error for bad settings. */
+        void setPathCache(const PathCache::Settings &settings)
+        {
+            settings.validate();
+            cache_ = settings.radius > 0.0 ? std::make_unique<PathCache>(planner_->dof(), settings) : nullptr;
+        }
+        /// the experience cache, or null when off
+        const PathCache *pathCache() const { return cache_.get(); }
         const PathPlannerStatistics &plannerStatistics() const { return planner_->statistics(); }
         const OmplPathPlanner &planner() const { return *planner_; }
         /// the status of the last plan (Solved also when the failure was in the heuristic or conversion)
@@ -156,12 +170,28 @@ namespace ropras::pomdp
                 else
                     planner_->setEnvironment(base_);
                 adapter_->configuration(start, start_.data());
-                lastStatus_ = planner_->plan(start_.data(), target_.data());
-                if (lastStatus_ != PathPlanStatus::Solved)
-                    return false;
+                const double *path = nullptr;
+                std::size_t count = 0;
+                if (cache_ &&
+                    cache_->find(planner_->checker(), *planner_->environment(), planner_->settings().resolution,
+                                 start_.data(), target_.data(), rng, cached_))
+                {
+                    ++statistics_.reused;
+                    path = cached_.data();
+                    count = cached_.size() / planner_->dof();
+                }
+                else
+                {
+                    lastStatus_ = planner_->plan(start_.data(), target_.data());
+                    if (lastStatus_ != PathPlanStatus::Solved)
+                        return false;
+                    path = planner_->path().data();
+                    count = planner_->waypointCount();
+                    if (cache_)
+                        cache_->store(target_.data(), path, count);
+                }
                 const std::size_t before = out.size();
-                if (!adapter_->pathToMacroAction(start, planner_->path().data(), planner_->waypointCount(), out) ||
-                    out.size() == before)
+                if (!adapter_->pathToMacroAction(start, path, count, out) || out.size() == before)
                 {
                     out.resize(before);
                     ++statistics_.conversionFailed;
@@ -182,7 +212,8 @@ namespace ropras::pomdp
         std::shared_ptr<const ompl_ext::Environment> base_;
         std::shared_ptr<ompl_ext::Environment> working_;
         std::unique_ptr<OmplPathPlanner> planner_;
-        std::vector<double> start_, target_;
+        std::vector<double> start_, target_, cached_;
+        std::unique_ptr<PathCache> cache_;
         Target targetValue_{};
         Statistics statistics_;
         PathPlanStatus lastStatus_{PathPlanStatus::Solved};

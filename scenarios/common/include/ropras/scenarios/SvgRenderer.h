@@ -13,6 +13,9 @@ namespace ropras::scenarios
     {
         /// steps whose recorded belief particles are drawn; empty = every recorded belief
         std::vector<std::size_t> beliefSteps;
+        /// steps at which the recorded robot (key "robot") is drawn posed by forward kinematics; empty = up to 6
+        /// steps spread evenly over the episode
+        std::vector<std::size_t> armSteps;
         /// width of the map in pixels (the height follows the bounds' aspect ratio)
         double width{800.0};
     };
@@ -25,7 +28,9 @@ namespace ropras::scenarios
         but for shading 3-D boxes, higher ones darker): the bounds, walls (gray), obstacles (cyan), danger
         zones (red), observation zones / landmarks / light (purple), the goal (green), the starts (orange),
         the executed trajectory of every label (drones in distinct colours, the target green), belief
-        particles (yellow, semi-transparent) with the true position at the chosen steps, the detection range
+        particles (yellow, semi-transparent) with the true position at the chosen steps, the robot's collision
+        spheres posed by forward kinematics at the chosen arm steps when the recording has "robot" (URDF +
+        configurations; coloured by time), the recorded "rays" (red segments), the detection range
         and capture radius when the scene has them, a legend, and a title with scenario, solver, outcome and
         steps. Scene keys it does not know are ignored.
 
