@@ -31,5 +31,22 @@ for budget in "sims:--sims 150" "time:--plan-time 0.1"; do
   # shellcheck disable=SC2086
   run ss-$tag-ropras3-d $SS --solver ropras3 $opt
 done
+# Ray-Detect (the paper's "Results on Ray-Detect and Shelf-Move", Ray-Detect half): the same four rows at the
+# paper's 50 simulations per call and at a tenth of its 4.6 s plan time per call (0.46 s; doc/scenario-ray-detect.md)
+RD="--scenario ray-detect"
+for budget in "sims:--sims 50" "time:--plan-time 0.46"; do
+  tag=${budget%%:*}
+  opt=${budget#*:}
+  # shellcheck disable=SC2086
+  run rd-$tag-bplan-d $RD --solver bplan $opt
+  # shellcheck disable=SC2086
+  run rd-$tag-rpomcp-d $RD --solver rpomcp $opt
+  # shellcheck disable=SC2086
+  run rd-$tag-ropras3-u $RD --solver ropras3 --heuristic uniform $opt
+  # shellcheck disable=SC2086
+  run rd-$tag-ropras3-d $RD --solver ropras3 $opt
+done
 "$R" table ss-sims-*.jsonl
 "$R" table ss-time-*.jsonl
+"$R" table rd-sims-*.jsonl
+"$R" table rd-time-*.jsonl

@@ -229,7 +229,8 @@ namespace
     {
         auto o = std::make_shared<RunOptions>();
         app.add_option("--scenario", o->scenario,
-                       "Scenario: light-dark, maze2d, random3d-1 ... random3d-4, multi-drone, sphere-search");
+                       "Scenario: light-dark, maze2d, random3d-1 ... random3d-4, multi-drone, sphere-search, "
+                       "ray-detect, stretch-crossing");
         app.add_option("--solver", o->solver, "ropras3, pomcp, rpomcp, bplan or refbasic")->capture_default_str();
         app.add_option("--heuristic", o->heuristic, "Sampling heuristic of the reference policy: uniform or dynamic")
             ->capture_default_str();
