@@ -5,7 +5,7 @@
 # Usage: scripts/reproduce-arm-results.sh [OUT_DIR] [EPISODES] (defaults: results-arm/, 30); then
 # `ropras table OUT_DIR/ss-*.jsonl`. Long: about 10-20 s per ROP-RAS3 / R-POMCP episode on one core at 150 sims.
 # Extra run options (e.g. --config delta.json) may be given in ARM_EXTRA; ARM_SEED sets the run seed (default
-# 1000, never used while tuning); ARM_BUDGETS="sims" runs only the 150-simulation rows.
+# 1000, never used while tuning); ARM_BUDGETS="sims" runs only the rows at the paper's simulation counts.
 set -u
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 R=${ROPRAS:-$here/build/bin/ropras}
@@ -34,5 +34,24 @@ for budget in "${budgets[@]}"; do
   # shellcheck disable=SC2086
   run ss-$tag-ropras3-d $SS --solver ropras3 $opt
 done
+# Ray-Detect (the paper's "Results on Ray-Detect and Shelf-Move", Ray-Detect half): the same four rows at the
+# paper's 50 simulations per call and at a tenth of its 4.6 s plan time per call (0.46 s; doc/scenario-ray-detect.md)
+RD="--scenario ray-detect"
+rd_budgets=("sims:--sims 50" "time:--plan-time 0.46")
+[ "${ARM_BUDGETS:-}" = sims ] && rd_budgets=("sims:--sims 50")
+for budget in "${rd_budgets[@]}"; do
+  tag=${budget%%:*}
+  opt=${budget#*:}
+  # shellcheck disable=SC2086
+  run rd-$tag-bplan-d $RD --solver bplan $opt
+  # shellcheck disable=SC2086
+  run rd-$tag-rpomcp-d $RD --solver rpomcp $opt
+  # shellcheck disable=SC2086
+  run rd-$tag-ropras3-u $RD --solver ropras3 --heuristic uniform $opt
+  # shellcheck disable=SC2086
+  run rd-$tag-ropras3-d $RD --solver ropras3 $opt
+done
 "$R" table ss-sims-*.jsonl
 [ "${ARM_BUDGETS:-}" = sims ] || "$R" table ss-time-*.jsonl
+"$R" table rd-sims-*.jsonl
+[ "${ARM_BUDGETS:-}" = sims ] || "$R" table rd-time-*.jsonl

@@ -10,5 +10,6 @@ namespace ropras::scenarios::detail
         addMultiDroneScenario(registry);
         addSphereSearchScenario(registry);
         addCrossingScenario(registry);
+        addRayDetectScenario(registry);
     }
 }  // namespace ropras::scenarios::detail

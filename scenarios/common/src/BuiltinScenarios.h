@@ -17,6 +17,7 @@ namespace ropras::scenarios::detail
     void addMultiDroneScenario(ScenarioRegistry &registry);    ///< multi-drone
     void addSphereSearchScenario(ScenarioRegistry &registry);  ///< sphere-search
     void addCrossingScenario(ScenarioRegistry &registry);      ///< stretch-crossing
+    void addRayDetectScenario(ScenarioRegistry &registry);     ///< ray-detect
 
     /** \brief Registers a navigation scenario \a name whose configuration is the embedded
         "<folder>/default.json" (e.g. folder "navigation/maze2d") with the user's overrides applied

@@ -1,7 +1,9 @@
 #include "ropras/scenarios/manipulation/ArmBulletWorld.h"
 
+#include <BulletCollision/NarrowPhaseCollision/btRaycastCallback.h>
 #include <btBulletCollisionCommon.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <string>
@@ -15,8 +17,11 @@ namespace ropras::scenarios
 {
     namespace
     {
-        /// user index of obstacles (arm spheres carry their collision link index)
+        /// user index of obstacles (arm spheres carry their collision link index); HIDDEN: not seen by rays
         constexpr int OBSTACLE = -1;
+        constexpr int HIDDEN = -2;
+        /// user index of ray-only obstacles (addRayBox): no collision pairs
+        constexpr int RAY_ONLY = -3;
 
         btVector3 toBt(const Eigen::Vector3d &v)
         {
@@ -38,9 +43,13 @@ namespace ropras::scenarios
             {
                 const int la = static_cast<const btCollisionObject *>(a->m_clientObject)->getUserIndex();
                 const int lb = static_cast<const btCollisionObject *>(b->m_clientObject)->getUserIndex();
-                if (la == OBSTACLE || lb == OBSTACLE)
+                if (la == RAY_ONLY || lb == RAY_ONLY)
                 {
-                    return la != lb;
+                    return false;
+                }
+                if (la < 0 || lb < 0)
+                {
+                    return (la < 0) != (lb < 0);
                 }
                 if (la == lb)
                 {
@@ -53,11 +62,40 @@ namespace ropras::scenarios
 
         struct ObstacleRay final : btCollisionWorld::ClosestRayResultCallback
         {
-            ObstacleRay(const btVector3 &from, const btVector3 &to) : ClosestRayResultCallback(from, to) {}
+            ObstacleRay(const btVector3 &from, const btVector3 &to) : ClosestRayResultCallback(from, to)
+            {
+                // GJK rather than the sub-simplex cast against convex shapes (both approximate, GJK less so;
+                // addRayBox's triangles are exact)
+                m_flags = btTriangleRaycastCallback::kF_UseGjkConvexCastRaytest;
+            }
             bool needsCollision(btBroadphaseProxy *proxy) const override
             {
-                return static_cast<const btCollisionObject *>(proxy->m_clientObject)->getUserIndex() == OBSTACLE;
+                const int index = static_cast<const btCollisionObject *>(proxy->m_clientObject)->getUserIndex();
+                return index == OBSTACLE || index == RAY_ONLY;
             }
+        };
+
+        /// the solid obstacles a probe touches
+        struct ProbeContact final : btCollisionWorld::ContactResultCallback
+        {
+            static bool solid(const btCollisionObject *o)
+            {
+                return o->getUserIndex() == OBSTACLE || o->getUserIndex() == HIDDEN;
+            }
+            bool needsCollision(btBroadphaseProxy *proxy) const override
+            {
+                return solid(static_cast<const btCollisionObject *>(proxy->m_clientObject));
+            }
+            btScalar addSingleResult(btManifoldPoint &cp, const btCollisionObjectWrapper *a, int, int,
+                                     const btCollisionObjectWrapper *b, int, int) override
+            {
+                if (cp.getDistance() <= 0)
+                {
+                    hits.push_back(solid(a->getCollisionObject()) ? a->getCollisionObject() : b->getCollisionObject());
+                }
+                return 0;
+            }
+            std::vector<const btCollisionObject *> hits;
         };
     }  // namespace
 
@@ -116,6 +154,7 @@ namespace ropras::scenarios
         btDefaultCollisionConfiguration configuration;
         btCollisionDispatcher dispatcher;
         btDbvtBroadphase broadphase;
+        std::vector<std::unique_ptr<btTriangleMesh>> meshes;  // the ray boxes' triangles (outlive their shapes)
         std::vector<std::unique_ptr<btCollisionShape>> shapes;
         std::vector<std::unique_ptr<btCollisionObject>> objects;
         btCollisionWorld world;  // after the objects: destroyed before them (releases their proxies itself)
@@ -163,7 +202,7 @@ namespace ropras::scenarios
 
     ArmBulletWorld::~ArmBulletWorld() = default;
 
-    std::size_t ArmBulletWorld::addSphere(const Eigen::Vector3d &center, double radius)
+    std::size_t ArmBulletWorld::addSphere(const Eigen::Vector3d &center, double radius, bool detectable)
     {
         if (!center.allFinite() || !(radius > 0.0) || !std::isfinite(radius))
         {
@@ -171,11 +210,12 @@ namespace ropras::scenarios
                         ") must be finite with radius > 0");
         }
         impl_->add(std::make_unique<btSphereShape>(static_cast<btScalar>(radius)),
-                   toBt(Eigen::Isometry3d(Eigen::Translation3d(center))), OBSTACLE);
+                   toBt(Eigen::Isometry3d(Eigen::Translation3d(center))), detectable ? OBSTACLE : HIDDEN);
         return impl_->obstacles++;
     }
 
-    std::size_t ArmBulletWorld::addBox(const Eigen::Isometry3d &pose, const Eigen::Vector3d &fullExtents)
+    std::size_t ArmBulletWorld::addBox(const Eigen::Isometry3d &pose, const Eigen::Vector3d &fullExtents,
+                                       bool detectable)
     {
         if (!pose.matrix().allFinite() || !fullExtents.allFinite() || !(fullExtents.minCoeff() > 0.0))
         {
@@ -183,11 +223,12 @@ namespace ropras::scenarios
         }
         auto shape = std::make_unique<btBoxShape>(toBt(Eigen::Vector3d(0.5 * fullExtents)));
         shape->setMargin(0);  // exact corners
-        impl_->add(std::move(shape), toBt(pose), OBSTACLE);
+        impl_->add(std::move(shape), toBt(pose), detectable ? OBSTACLE : HIDDEN);
         return impl_->obstacles++;
     }
 
-    std::size_t ArmBulletWorld::addCylinder(const Eigen::Isometry3d &pose, double radius, double length)
+    std::size_t ArmBulletWorld::addCylinder(const Eigen::Isometry3d &pose, double radius, double length,
+                                            bool detectable)
     {
         if (!pose.matrix().allFinite() || !(radius > 0.0) || !(length > 0.0) || !std::isfinite(radius) ||
             !std::isfinite(length))
@@ -197,7 +238,34 @@ namespace ropras::scenarios
         auto shape = std::make_unique<btCylinderShapeZ>(btVector3(
             static_cast<btScalar>(radius), static_cast<btScalar>(radius), static_cast<btScalar>(0.5 * length)));
         shape->setMargin(0);
-        impl_->add(std::move(shape), toBt(pose), OBSTACLE);
+        impl_->add(std::move(shape), toBt(pose), detectable ? OBSTACLE : HIDDEN);
+        return impl_->obstacles++;
+    }
+
+    std::size_t ArmBulletWorld::addRayBox(const Eigen::Isometry3d &pose, const Eigen::Vector3d &fullExtents)
+    {
+        if (!pose.matrix().allFinite() || !fullExtents.allFinite() || !(fullExtents.minCoeff() > 0.0))
+        {
+            throw Error("ArmBulletWorld::addRayBox: the pose and extents must be finite with extents > 0");
+        }
+        auto mesh = std::make_unique<btTriangleMesh>();
+        const Eigen::Vector3d h = 0.5 * fullExtents;
+        const auto corner = [&](int i)
+        { return toBt(Eigen::Vector3d((i & 1) ? h.x() : -h.x(), (i & 2) ? h.y() : -h.y(), (i & 4) ? h.z() : -h.z())); };
+        // two triangles per face: the faces normal to x (bit 1), y (bit 2), z (bit 4), at -h and +h
+        for (int axis = 0; axis < 3; ++axis)
+        {
+            const int bit = 1 << axis, u = 1 << ((axis + 1) % 3), v = 1 << ((axis + 2) % 3);
+            for (int side = 0; side < 2; ++side)
+            {
+                const int base = side ? bit : 0;
+                mesh->addTriangle(corner(base), corner(base | u), corner(base | u | v));
+                mesh->addTriangle(corner(base), corner(base | u | v), corner(base | v));
+            }
+        }
+        auto shape = std::make_unique<btBvhTriangleMeshShape>(mesh.get(), true);
+        impl_->meshes.push_back(std::move(mesh));
+        impl_->add(std::move(shape), toBt(pose), RAY_ONLY);
         return impl_->obstacles++;
     }
 
@@ -255,6 +323,26 @@ namespace ropras::scenarios
         for (const auto &object : impl_->objects)
         {
             if (object.get() == ray.m_collisionObject)
+            {
+                return index - static_cast<int>(impl_->arm.size());
+            }
+            ++index;
+        }
+        return -1;
+    }
+
+    int ArmBulletWorld::containing(const Eigen::Vector3d &p) const
+    {
+        btSphereShape probeShape(static_cast<btScalar>(1e-4));
+        btCollisionObject probe;
+        probe.setCollisionShape(&probeShape);
+        probe.setWorldTransform(toBt(Eigen::Isometry3d(Eigen::Translation3d(p))));
+        ProbeContact contact;
+        impl_->world.contactTest(&probe, contact);
+        int index = 0;
+        for (const auto &object : impl_->objects)
+        {
+            if (std::find(contact.hits.begin(), contact.hits.end(), object.get()) != contact.hits.end())
             {
                 return index - static_cast<int>(impl_->arm.size());
             }

@@ -195,18 +195,24 @@ namespace ropras::scenarios
     bool ArmPlanningAdapter::pathToMacroAction(const SphereSearchModel::State &, const double *waypoints,
                                                std::size_t count, std::vector<ArmAction> &out) const
     {
-        points_.clear();
-        const std::size_t n = pomdp::discretizeJointPath(waypoints, count, ARM_DOF, step_, macroLength_, points_);
+        return jointPathToArmActions(waypoints, count, step_, macroLength_, waypoints_, points_, out);
+    }
+
+    bool jointPathToArmActions(const double *waypoints, std::size_t count, double step, std::size_t macroLength,
+                               bool waypointActions, std::vector<double> &scratch, std::vector<ArmAction> &out)
+    {
+        scratch.clear();
+        const std::size_t n = pomdp::discretizeJointPath(waypoints, count, ARM_DOF, step, macroLength, scratch);
         const double *previous = waypoints;
         for (std::size_t i = 0; i < n; ++i)
         {
-            const double *point = &points_[i * ARM_DOF];
+            const double *point = &scratch[i * ARM_DOF];
             ArmAction a;
             for (std::size_t j = 0; j < ARM_DOF; ++j)
             {
-                a.dq[j] = waypoints_ ? point[j] : point[j] - previous[j];
+                a.dq[j] = waypointActions ? point[j] : point[j] - previous[j];
             }
-            a.waypoint = waypoints_;
+            a.waypoint = waypointActions;
             out.push_back(a);
             previous = point;
         }

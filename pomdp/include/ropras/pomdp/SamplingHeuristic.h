@@ -120,6 +120,11 @@ namespace ropras::pomdp
             {
                 return 0.0;
             }
+            const double own = space_->beliefEntropy(belief);
+            if (own >= 0.0)
+            {
+                return std::min(1.0, own);
+            }
             bins_.clear();
             for (const auto &particle : belief)
             {

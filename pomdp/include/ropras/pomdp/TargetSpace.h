@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "ropras/pomdp/BeliefView.h"
 #include "ropras/pomdp/Rng.h"
 
 namespace ropras::pomdp
@@ -39,6 +40,13 @@ namespace ropras::pomdp
             log; 0 = unknown, then the number of particles is used). */
         virtual std::size_t numEntropyBins() const = 0;
 
+        /** \brief Optional (DynamicHeuristic): H(b) in [0, 1] computed by the model itself (e.g. an average of
+            per-object entropies); a negative value (the default) means: use the histogram of entropyBin. */
+        virtual double beliefEntropy(BeliefView<State> belief) const
+        {
+            (void)belief;
+            return -1.0;
+        }
         /** \brief Optional (EpsilonGreedyHeuristic): a target uniformly from free space; false if unsupported. */
         virtual bool sampleFree(Rng &rng, Target &out) const
         {

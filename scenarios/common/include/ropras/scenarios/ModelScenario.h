@@ -57,6 +57,9 @@ namespace ropras::scenarios
         /// optional: what a step ended in, by name (e.g. "pedestrian-collision"; "" = nothing), recorded as the
         /// recording's "events"
         std::function<std::string(const State &)> event;
+        /// optional: the sensor rays of a state ([origin, end] segments), recorded per step as the recording's
+        /// "rays" ({"step", "segments"}; drawn by `ropras view`)
+        std::function<void(const State &, std::vector<std::array<Point3, 2>> &)> rays;
         /// solver and filter parameter defaults of this scenario (the user's --param values override them)
         std::map<std::string, double> defaults;
         std::size_t horizon{100};
@@ -140,12 +143,17 @@ namespace ropras::scenarios
             {
                 out_["events"] = nlohmann::json::array();
             }
+            if (parts_.rays)
+            {
+                out_["rays"] = nlohmann::json::array();
+            }
         }
 
         void onStart(const State &trueState, const std::vector<State> &particles) override
         {
             out_["trajectory"].push_back(pointsOf(trueState));
             addConfiguration(trueState);
+            addRays(0, trueState);
             addBelief(0, particles);
         }
         void onPlan(std::size_t step, const std::vector<Action> &macro, const pomdp::SearchStatistics &s) override
@@ -157,6 +165,7 @@ namespace ropras::scenarios
         {
             out_["trajectory"].push_back(pointsOf(result.next));
             addConfiguration(result.next);
+            addRays(step, result.next);
             out_["rewards"].push_back(result.reward);
             if (parts_.event)
             {
@@ -198,6 +207,15 @@ namespace ropras::scenarios
                 out_["robot"]["configurations"].push_back(joints_);
             }
         }
+        void addRays(std::size_t step, const State &s)
+        {
+            if (parts_.rays)
+            {
+                segments_.clear();
+                parts_.rays(s, segments_);
+                out_["rays"].push_back({{"step", step}, {"segments", segments_}});
+            }
+        }
         void addBelief(std::size_t step, const std::vector<State> &particles)
         {
             nlohmann::json list = nlohmann::json::array();
@@ -215,6 +233,7 @@ namespace ropras::scenarios
         nlohmann::json &out_;
         std::vector<Point3> scratch_;
         std::vector<double> joints_;
+        std::vector<std::array<Point3, 2>> segments_;
         std::vector<State> last_;
         std::size_t lastStep_{0};
     };

@@ -30,10 +30,14 @@ namespace ropras::scenarios
         ArmBulletWorld &operator=(const ArmBulletWorld &) = delete;
 
         /** \brief Static obstacles; each returns its index. Throw ropras::Error for non-finite values or
-            non-positive sizes. */
-        std::size_t addSphere(const Eigen::Vector3d &center, double radius);
-        std::size_t addBox(const Eigen::Isometry3d &pose, const Eigen::Vector3d &fullExtents);
-        std::size_t addCylinder(const Eigen::Isometry3d &pose, double radius, double length);
+            non-positive sizes. A \a detectable obstacle is seen by rayTest; every obstacle blocks the arm. */
+        std::size_t addSphere(const Eigen::Vector3d &center, double radius, bool detectable = true);
+        std::size_t addBox(const Eigen::Isometry3d &pose, const Eigen::Vector3d &fullExtents, bool detectable = true);
+        std::size_t addCylinder(const Eigen::Isometry3d &pose, double radius, double length, bool detectable = true);
+        /** \brief A box that only rays see (a btBvhTriangleMeshShape of its 12 triangles: rayTest is exact
+            against triangles, while Bullet's ray cast against convex shapes is off by up to cm); it blocks
+            nothing. Pair it with a non-detectable box of the same pose for collisions. Returns its index. */
+        std::size_t addRayBox(const Eigen::Isometry3d &pose, const Eigen::Vector3d &fullExtents);
         std::size_t obstacleCount() const;
 
         /** \brief Whether the arm at \a q (dof() values) touches an obstacle or itself. */
@@ -44,10 +48,14 @@ namespace ropras::scenarios
             \a lastValidFraction (if non-null) gets (k-1)/n for the first colliding k. */
         bool motionValid(const double *q0, const double *q1, double resolution, double *lastValidFraction = nullptr);
 
-        /** \brief btCollisionWorld::rayTest from \a from to \a to against the obstacles only (the arm is not
-            hit): the index of the closest obstacle hit, or -1; \a fraction gets the hit's fraction along
-            the segment. */
+        /** \brief btCollisionWorld::rayTest from \a from to \a to against the detectable obstacles only (the
+            arm and the other obstacles are neither hit nor occlude): the index of the closest obstacle hit, or -1; \a
+           fraction gets the hit's fraction along the segment. */
         int rayTest(const Eigen::Vector3d &from, const Eigen::Vector3d &to, double *fraction = nullptr) const;
+
+        /** \brief The smallest index of a solid obstacle (not a ray box) that contains the point \a p (Bullet
+            contactTest of a 0.1 mm probe sphere), or -1: rayTest does not report the shape a ray starts inside. */
+        int containing(const Eigen::Vector3d &p) const;
 
     private:
         struct Impl;

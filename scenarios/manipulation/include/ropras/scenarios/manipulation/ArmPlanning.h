@@ -104,6 +104,14 @@ namespace ropras::scenarios
         std::shared_ptr<const ompl_ext::Environment> environment_;
     };
 
+    /** \brief PathToMacroAction of the arm scenarios, "motion path up to a predefined length": the joint path
+        (\a count x ARM_DOF waypoints, row-major) cut into steps of L2 norm <= \a step (discretizeJointPath),
+        the first \a macroLength of them appended to \a out as joint displacements dq (\a waypointActions: as
+        the points themselves, ArmAction::waypoint). \a scratch is reused. Returns false when nothing was
+        appended. */
+    bool jointPathToArmActions(const double *waypoints, std::size_t count, double step, std::size_t macroLength,
+                               bool waypointActions, std::vector<double> &scratch, std::vector<ArmAction> &out);
+
     /** \brief The OMPL planning adapter of the arm scenarios: the configuration is the state's joints; a
         Point target's configuration comes from an ArmGoalSampler (IK in the planner's environment); a
         planned path becomes PathToMacroAction "motion path up to a predefined length": the path cut into
