@@ -36,6 +36,8 @@ namespace
         std::size_t edges{40};        ///< valid and invalid 1 rad edges per scene (each)
         std::size_t fclConfigs{100};  ///< configurations per scene for FCL with spheres
         std::size_t meshConfigs{20};  ///< configurations per scene for FCL with meshes
+        std::size_t farBoxes{0};      ///< boxes out of reach added to every scene (a shared base)
+        double farRadius{2.0};        ///< ... at this distance from the world origin or more
         double edgeLength{1.0};
         double resolution{1.0 / 32.0};
         unsigned seed{1};
@@ -113,6 +115,44 @@ namespace
         return ns;
     }
 
+    /** \brief --far-boxes: \a count boxes (0.05 to 0.3 m, any orientation) with centres uniform over the shell from
+        \a radius to \a radius + 3 m around the world origin, out of the robot's reach when \a radius exceeds it. */
+    std::shared_ptr<const Environment> farBoxes(std::size_t count, double radius, unsigned seed)
+    {
+        auto env = std::make_shared<Environment>();
+        std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ULL);
+        std::normal_distribution<double> normal;
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        for (std::size_t k = 0; k < count; ++k)
+        {
+            Eigen::Vector3d dir(normal(rng), normal(rng), normal(rng));
+            dir /= std::max(dir.norm(), 1e-9);
+            // uniform in volume: r^3 uniform between the shell's radii
+            const double r0 = radius * radius * radius, r1 = std::pow(radius + 3.0, 3.0);
+            const double r = std::cbrt(r0 + unit(rng) * (r1 - r0));
+            const Eigen::Vector3d extents(0.05 + 0.25 * unit(rng), 0.05 + 0.25 * unit(rng), 0.05 + 0.25 * unit(rng));
+            Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+            pose.linear() =
+                Eigen::Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng)).normalized().toRotationMatrix();
+            // the box's farthest point is inside the shell's outer side, its nearest outside the inner radius
+            pose.translation() = dir * std::max(r, radius + 0.5 * extents.norm());
+            env->addBox("far" + std::to_string(k), pose, extents);
+        }
+        return env;
+    }
+
+    /// \a scene's objects in an overlay over \a base
+    Environment overBase(const Environment &scene, std::shared_ptr<const Environment> base)
+    {
+        Environment over(std::move(base));
+        for (std::size_t id = 0; id < scene.objectCount(); ++id)
+        {
+            const int i = static_cast<int>(id);
+            over.addObject(scene.objectName(i), scene.objectShapes(i), scene.objectPose(i));
+        }
+        return over;
+    }
+
     SimdBackend parseBackend(const std::string &name)
     {
         if (name == "best")
@@ -176,10 +216,15 @@ namespace
                         " together ask for " + ropras::formatBytes(configBytes + edgeBytes) +
                         ", more than the memory limit " + ropras::formatBytes(ropras::memoryLimit()) +
                         " (ropras --max-memory)");
+        // --far-boxes: one shared base of boxes out of reach under every scene
+        const std::shared_ptr<const Environment> far =
+            a.farBoxes > 0 ? farBoxes(a.farBoxes, a.farRadius, a.seed) : nullptr;
         std::vector<Scene> scenes;
         for (const std::string &path : paths)
         {
             Scene s{path, loadPlanningScene(path), {}, {}, {}, {}, {}, {}, {}};
+            if (far)
+                s.env = overBase(s.env, far);
             s.configs.resize(a.configs * dof);
             for (std::size_t k = 0; k < a.configs; ++k)
             {
@@ -492,6 +537,14 @@ namespace
                        "PlanningScene YAML whose robot_state.attached_collision_objects the robot holds: adds rows for "
                        "the same valid configurations with and without them, and the cost of a particle scene")
             ->check(CLI::ExistingFile);
+        app.add_option("--far-boxes", args->farBoxes,
+                       "add this many boxes out of reach (a shared base under every scene; see --far-radius)")
+            ->capture_default_str()
+            ->check(CLI::Range(std::size_t{0}, std::size_t{1000000}));
+        app.add_option("--far-radius", args->farRadius,
+                       "--far-boxes lie from this distance (m) to 3 m beyond it from the world origin")
+            ->capture_default_str()
+            ->check(CLI::Range(0.0, 1e3));
         app.add_option("--seed", args->seed, "random seed")->capture_default_str()->check(ropras::bin::SEED32);
         args->selection.addOptions(app, false);
         return [args] { return run(*args); };

@@ -97,6 +97,7 @@ namespace ropras::ompl_ext
         layout.index.emplace(def->name, id);
         layout.objects.push_back(std::move(def));
         poses_.push_back(pose.affine());
+        index_.added(layout.primitives.size());  // before the boxes are written: a stale tree is not refitted
         writeQueryForm(id);
         extendBoxChunks();
         return id;
@@ -301,6 +302,7 @@ namespace ropras::ompl_ext
         capsules_.clear();
         clouds_.clear();
         boxChunks_.clear();
+        index_.clear();
     }
 
     Eigen::Isometry3d Environment::shapeWorldPose(int id, std::size_t k) const
@@ -354,6 +356,26 @@ namespace ropras::ompl_ext
             return inflated(o.cx, o.cy, o.cz, o.boundRadius, o.boundRadius, o.boundRadius);
         }
     }  // namespace
+
+    const ObstacleAabb &Environment::primitiveBox(std::size_t i) const noexcept
+    {
+        const PrimitiveRef &r = layout_->primitives[i];
+        const auto slot = static_cast<std::size_t>(r.slot);
+        switch (r.type)
+        {
+            case ShapeType::Sphere:
+                return spheres_[slot].aabb;
+            case ShapeType::Box:
+                return boxes_[slot].aabb;
+            case ShapeType::Cylinder:
+                return cylinders_[slot].aabb;
+            case ShapeType::Capsule:
+                return capsules_[slot].aabb;
+            case ShapeType::PointCloud:
+                break;
+        }
+        return clouds_[slot].aabb;
+    }
 
     void Environment::setBox(std::size_t primitive, const ObstacleAabb &box)
     {
@@ -477,6 +499,7 @@ namespace ropras::ompl_ext
                     break;
                 }
             }
+            index_.moved(primitive, primitiveBox(primitive));
         }
     }
 

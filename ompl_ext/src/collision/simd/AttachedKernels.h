@@ -25,6 +25,7 @@ namespace ropras::ompl_ext::simd
     struct AttachedKernels
     {
         using K = Kernels<V>;
+        using Mask = typename V::Mask;
 
         // ------------------------------------------------------------ single configuration
 
@@ -87,25 +88,6 @@ namespace ropras::ompl_ext::simd
             return false;
         }
 
-        static const ObstacleAabb &boxOf(const Environment &e, const PrimitiveRef &ref) noexcept
-        {
-            const auto i = static_cast<std::size_t>(ref.slot);
-            switch (ref.type)
-            {
-                case ShapeType::Sphere:
-                    return e.spheres()[i].aabb;
-                case ShapeType::Box:
-                    return e.boxes()[i].aabb;
-                case ShapeType::Cylinder:
-                    return e.cylinders()[i].aabb;
-                case ShapeType::Capsule:
-                    return e.capsules()[i].aabb;
-                case ShapeType::PointCloud:
-                    break;
-            }
-            return e.clouds()[i].aabb;
-        }
-
         /// the scalar sphere-versus-box test (for Environments with too few primitives for a chunk)
         static bool sphereTouchesAabb(const float *c, float r, const ObstacleAabb &b) noexcept
         {
@@ -141,12 +123,24 @@ namespace ropras::ompl_ext::simd
             };
             for (const Environment *e = &env; e != nullptr; e = e->base())
             {
+                if (const ObstacleTree *tree = e->obstacleTree())
+                {
+                    // the broad phase: the primitives whose boxes overlap the bound's box
+                    const Aabb q{{bound[0] - a.br, bound[1] - a.br, bound[2] - a.br},
+                                 {bound[0] + a.br, bound[1] + a.br, bound[2] + a.br}};
+                    if (forEachNearPrimitive<V>(*tree, q,
+                                                [&](std::size_t k) {
+                                                    return sphereTouchesAabb(bound, a.br, e->primitiveBox(k)) &&
+                                                           survivor(*e, e->primitiveRef(k));
+                                                }))
+                        return true;
+                    continue;
+                }
                 const std::vector<ObstacleBoxChunk> &chunks = e->obstacleBoxChunks();
                 if (chunks.empty())
                     for (std::size_t k = 0; k < e->primitiveCount(); ++k)
                     {
-                        const PrimitiveRef &ref = e->primitiveRef(k);
-                        if (sphereTouchesAabb(bound, a.br, boxOf(*e, ref)) && survivor(*e, ref))
+                        if (sphereTouchesAabb(bound, a.br, e->primitiveBox(k)) && survivor(*e, e->primitiveRef(k)))
                             return true;
                     }
                 for (std::size_t c = 0; c < chunks.size(); ++c)
@@ -309,19 +303,21 @@ namespace ropras::ompl_ext::simd
         {
             unsigned hit = 0u;
             const V br = V::broadcast(a.br);
+            /// one obstacle; true when every lane has collided
+            const auto one = [&](const auto &o, const auto &exact)
+            {
+                const unsigned near = sphereTouchesBox(bound[0], bound[1], bound[2], br, o.aabb).bits() & lanes & ~hit;
+                for (int k = 0; k < n && near != 0u; ++k)
+                    hit |= exact(x[k], y[k], z[k], V::broadcast(a.r[static_cast<std::size_t>(first + k)]), o,
+                                 near & ~hit) &
+                           near;
+                return (lanes & ~hit) == 0u;
+            };
             const auto sweep = [&](const auto &obstacles, const auto &exact)
             {
                 for (const auto &o : obstacles)
-                {
-                    const unsigned near =
-                        sphereTouchesBox(bound[0], bound[1], bound[2], br, o.aabb).bits() & lanes & ~hit;
-                    for (int k = 0; k < n && near != 0u; ++k)
-                        hit |= exact(x[k], y[k], z[k], V::broadcast(a.r[static_cast<std::size_t>(first + k)]), o,
-                                     near & ~hit) &
-                               near;
-                    if ((lanes & ~hit) == 0u)
+                    if (one(o, exact))
                         return true;
-                }
                 return false;
             };
             const auto plain = [](const V &px, const V &py, const V &pz, const V &pr, const auto &o, unsigned)
@@ -335,9 +331,33 @@ namespace ropras::ompl_ext::simd
                 return c != 0u ? hitCloud(px, py, pz, pr, o, c) : 0u;
             };
             for (const Environment *e = &env; e != nullptr; e = e->base())
+            {
+                if (const ObstacleTree *tree = e->obstacleTree())
+                {
+                    // the broad phase: the primitives whose boxes overlap the box around the lanes' bounds
+                    const Mask m = Mask::fromBits(lanes);
+                    const V far = V::broadcast(1e30f), nfar = V::broadcast(-1e30f);
+                    Aabb q;
+                    for (int i = 0; i < 3; ++i)
+                    {
+                        q.lo[i] = hmin(select(m, bound[i] - br, far));
+                        q.hi[i] = hmax(select(m, bound[i] + br, nfar));
+                    }
+                    const auto visit = [&](const auto &o)
+                    {
+                        if constexpr (std::is_same_v<std::decay_t<decltype(o)>, CloudObstacle>)
+                            return one(o, cloud);
+                        else
+                            return one(o, plain);
+                    };
+                    if (forEachNearPrimitive<V>(*tree, q, [&](std::size_t k) { return withPrimitive(*e, k, visit); }))
+                        break;
+                    continue;
+                }
                 if (sweep(e->spheres(), plain) || sweep(e->boxes(), plain) || sweep(e->cylinders(), plain) ||
                     sweep(e->capsules(), plain) || sweep(e->clouds(), cloud))
                     break;
+            }
             return hit;
         }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #include "KinematicProgram.h"
 #include "SinCos.h"
@@ -220,6 +221,61 @@ namespace ropras::ompl_ext::simd
         const V dy = max(abs(y - V::broadcast(b.cy)) - V::broadcast(b.ey), zero);
         const V dz = max(abs(z - V::broadcast(b.cz)) - V::broadcast(b.ez), zero);
         return cmpLe(fma(dx, dx, fma(dy, dy, dz * dz)), r * r);
+    }
+
+    /** \brief Calls visit(k) for each primitive k of \a tree (ObstacleTree) whose box overlaps \a box, eight
+        children of a node with one vector test; stops and returns true as soon as visit does. */
+    template <class V, class Visit>
+    inline bool forEachNearPrimitive(const ObstacleTree &tree, const Aabb &box, const Visit &visit) noexcept
+    {
+        const V lox = V::broadcast(box.lo[0]), loy = V::broadcast(box.lo[1]), loz = V::broadcast(box.lo[2]);
+        const V hix = V::broadcast(box.hi[0]), hiy = V::broadcast(box.hi[1]), hiz = V::broadcast(box.hi[2]);
+        // depth <= 10 for 2^31 primitives, and each node popped pushes at most 8: 7 * 10 + 1 entries
+        std::int32_t stack[96];
+        int top = 0;
+        stack[top++] = tree.root();
+        while (top > 0)
+        {
+            const std::int32_t n = stack[--top];
+            const ObstacleIndexNode &node = tree.nodes[static_cast<std::size_t>(n)];
+            unsigned bits =
+                (cmpLe(V::load(node.lox), hix) & cmpGe(V::load(node.hix), lox) & cmpLe(V::load(node.loy), hiy) &
+                 cmpGe(V::load(node.hiy), loy) & cmpLe(V::load(node.loz), hiz) & cmpGe(V::load(node.hiz), loz))
+                    .bits();
+            const bool leaf = tree.isLeaf(n);
+            while (bits != 0u)
+            {
+                const std::int32_t child = node.child[__builtin_ctz(bits)];
+                bits &= bits - 1u;
+                if (!leaf)
+                    stack[top++] = child;
+                else if (visit(static_cast<std::size_t>(child)))
+                    return true;
+            }
+        }
+        return false;
+    }
+
+    /// f(obstacle) for primitive \a k of \a env (its query-form entry of the right type)
+    template <class F>
+    inline bool withPrimitive(const Environment &env, std::size_t k, const F &f) noexcept
+    {
+        const PrimitiveRef &r = env.primitiveRef(k);
+        const auto i = static_cast<std::size_t>(r.slot);
+        switch (r.type)
+        {
+            case ShapeType::Sphere:
+                return f(env.spheres()[i]);
+            case ShapeType::Box:
+                return f(env.boxes()[i]);
+            case ShapeType::Cylinder:
+                return f(env.cylinders()[i]);
+            case ShapeType::Capsule:
+                return f(env.capsules()[i]);
+            case ShapeType::PointCloud:
+                break;
+        }
+        return f(env.clouds()[i]);
     }
 
     template <class V>
@@ -439,32 +495,41 @@ namespace ropras::ompl_ext::simd
         static bool envSingle(const KinematicProgram &p, const Environment &env, float *buf, Placed &placed,
                               const Aabb &box) noexcept
         {
+            const auto hits = [&](const auto &o)
+            {
+                if constexpr (std::is_same_v<std::decay_t<decltype(o)>, CloudObstacle>)
+                    return o.boundRadius >= 0.0f &&
+                           obstacleSingleCulled(p, buf, placed, box, o,
+                                                [&](const V &x, const V &y, const V &z, const V &r)
+                                                {
+                                                    const unsigned cand =
+                                                        boundTest(x, y, z, r, o.cx, o.cy, o.cz, o.boundRadius).bits();
+                                                    return cand != 0u ? hitCloud(x, y, z, r, o, cand) : 0u;
+                                                });
+                else
+                    return obstacleSingleCulled(p, buf, placed, box, o,
+                                                [&](const V &x, const V &y, const V &z, const V &r)
+                                                { return hitObstacle(x, y, z, r, o).bits(); });
+            };
             const auto anyHit = [&](const auto &obstacles)
             {
                 for (const auto &o : obstacles)
-                    if (obstacleSingleCulled(p, buf, placed, box, o,
-                                             [&](const V &x, const V &y, const V &z, const V &r)
-                                             { return hitObstacle(x, y, z, r, o).bits(); }))
+                    if (hits(o))
                         return true;
                 return false;
             };
             for (const Environment *e = &env; e != nullptr; e = e->base())  // the overlay, then its bases
             {
-                if (anyHit(e->spheres()) || anyHit(e->boxes()) || anyHit(e->cylinders()) || anyHit(e->capsules()))
-                    return true;
-                for (const CloudObstacle &o : e->clouds())
+                if (const ObstacleTree *tree = e->obstacleTree())
                 {
-                    if (o.boundRadius < 0.0f)
-                        continue;
-                    if (obstacleSingleCulled(p, buf, placed, box, o,
-                                             [&](const V &x, const V &y, const V &z, const V &r)
-                                             {
-                                                 const unsigned cand =
-                                                     boundTest(x, y, z, r, o.cx, o.cy, o.cz, o.boundRadius).bits();
-                                                 return cand != 0u ? hitCloud(x, y, z, r, o, cand) : 0u;
-                                             }))
+                    // the broad phase: only the primitives whose boxes overlap the robot's
+                    if (forEachNearPrimitive<V>(*tree, box, [&](std::size_t k) { return withPrimitive(*e, k, hits); }))
                         return true;
+                    continue;
                 }
+                if (anyHit(e->spheres()) || anyHit(e->boxes()) || anyHit(e->cylinders()) || anyHit(e->capsules()) ||
+                    anyHit(e->clouds()))
+                    return true;
             }
             return false;
         }
@@ -1048,32 +1113,41 @@ namespace ropras::ompl_ext::simd
                 }
                 return false;
             };
+            const auto decides = [&](const auto &o)
+            {
+                if constexpr (std::is_same_v<std::decay_t<decltype(o)>, CloudObstacle>)
+                    return o.boundRadius >= 0.0f &&
+                           obstacle(obstacleBox(o),
+                                    [&](const V &x, const V &y, const V &z, const V &r, unsigned cand)
+                                    {
+                                        const unsigned near =
+                                            boundTest(x, y, z, r, o.cx, o.cy, o.cz, o.boundRadius).bits() & cand;
+                                        return near != 0u ? hitCloud(x, y, z, r, o, near) : 0u;
+                                    });
+                else
+                    return obstacle(obstacleBox(o), [&](const V &x, const V &y, const V &z, const V &r, unsigned)
+                                    { return hitObstacle(x, y, z, r, o).bits(); });
+            };
             const auto sweep = [&](const auto &obstacles)
             {
                 for (const auto &o : obstacles)
-                    if (obstacle(obstacleBox(o), [&](const V &x, const V &y, const V &z, const V &r, unsigned)
-                                 { return hitObstacle(x, y, z, r, o).bits(); }))
+                    if (decides(o))
                         return true;
                 return false;
             };
             for (const Environment *e = &env; e != nullptr; e = e->base())  // the overlay, then its bases
             {
-                if (sweep(e->spheres()) || sweep(e->boxes()) || sweep(e->cylinders()) || sweep(e->capsules()))
-                    return hit;
-                for (const CloudObstacle &o : e->clouds())
+                if (const ObstacleTree *tree = e->obstacleTree())
                 {
-                    const ObstacleBox ob = obstacleBox(o);
-                    if (o.boundRadius < 0.0f)
-                        continue;
-                    if (obstacle(ob,
-                                 [&](const V &x, const V &y, const V &z, const V &r, unsigned cand)
-                                 {
-                                     const unsigned near =
-                                         boundTest(x, y, z, r, o.cx, o.cy, o.cz, o.boundRadius).bits() & cand;
-                                     return near != 0u ? hitCloud(x, y, z, r, o, near) : 0u;
-                                 }))
+                    // the broad phase: only the primitives whose boxes overlap the box around every active lane
+                    if (forEachNearPrimitive<V>(*tree, box,
+                                                [&](std::size_t k) { return withPrimitive(*e, k, decides); }))
                         return hit;
+                    continue;
                 }
+                if (sweep(e->spheres()) || sweep(e->boxes()) || sweep(e->cylinders()) || sweep(e->capsules()) ||
+                    sweep(e->clouds()))
+                    return hit;
             }
             if (env.hasAttachedBodies())
             {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ropras/ompl_ext/scene/AttachedBody.h"
+#include "ropras/ompl_ext/scene/ObstacleIndex.h"
 #include "ropras/ompl_ext/scene/PointCloud.h"
 #include "ropras/ompl_ext/scene/Shape.h"
 
@@ -159,6 +160,11 @@ namespace ropras::ompl_ext
         std::size_t primitiveCount() const noexcept { return layout_->primitives.size(); }
         /// primitive \a i (< primitiveCount()) of that order
         const PrimitiveRef &primitiveRef(std::size_t i) const noexcept { return layout_->primitives[i]; }
+        /// the world box (ObstacleAabb) of primitive \a i (< primitiveCount())
+        const ObstacleAabb &primitiveBox(std::size_t i) const noexcept;
+        /** \brief The broad phase over this Environment's primitives (not its base's; see ObstacleIndex), built
+            by the first call after objects were added; nullptr below ObstacleIndex::MIN_PRIMITIVES primitives. */
+        const ObstacleTree *obstacleTree() const noexcept { return index_.tree(*this); }
 
         /** \brief Attaches \a body to a link of \a robot (see AttachedBody; non-sphere geometry is spherized with
             \a spherizer); returns its index (attachedBody(i)). The name must be unique among objects and attached
@@ -224,6 +230,7 @@ namespace ropras::ompl_ext
         std::vector<CapsuleObstacle> capsules_;
         std::vector<CloudObstacle> clouds_;
         std::vector<ObstacleBoxChunk> boxChunks_;
+        ObstacleIndex index_;
         std::shared_ptr<const Environment> base_;
         std::vector<Attached> attached_;
     };
