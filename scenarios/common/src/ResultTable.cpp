@@ -340,6 +340,8 @@ namespace ropras::scenarios
                 configs.push_back(it->second.configKey);
             }
         }
+        records_.push_back(record);
+        sources_.push_back(source);
         Group &group = it->second;
         group.rewards.push_back(reward);
         group.discounted.push_back(discounted);
@@ -462,6 +464,40 @@ namespace ropras::scenarios
     std::string ResultTable::markdown() const
     {
         return markdownTable(rows());
+    }
+
+    std::string ResultTable::csv() const
+    {
+        return csvTable(rows());
+    }
+
+    std::string csvTable(const std::vector<ResultRow> &rows)
+    {
+        const auto field = [](const std::string &text)
+        {
+            if (text.find_first_of(",\"\r\n") == std::string::npos)
+                return text;
+            std::string out = "\"";
+            for (const char c : text)
+                out += c == '"' ? std::string("\"\"") : std::string(1, c);
+            return out + "\"";
+        };
+        const auto number = [](double v) { return format("%.17g", v); };
+        std::ostringstream out;
+        out << "scenario,solver,heuristic,budget,episodes,sims_per_call,success_percent,success_stderr,reward_mean,"
+               "reward_stderr,discounted_mean,discounted_stderr,steps_mean,ref_fail_percent,plan_time_s\r\n";
+        for (const auto &r : rows)
+        {
+            const double share = r.successPercent / 100.0;
+            const double successErr = 100.0 * std::sqrt(share * (1.0 - share) / static_cast<double>(r.episodes));
+            out << field(r.scenario) << ',' << field(r.solver) << ',' << field(r.heuristic) << ',' << field(r.budget)
+                << ',' << r.episodes << ',' << (r.hasSimulations ? number(r.simsPerCall) : "") << ','
+                << number(r.successPercent) << ',' << number(successErr) << ',' << number(r.rewardMean) << ','
+                << number(r.rewardStdErr) << ',' << number(r.discountedMean) << ',' << number(r.discountedStdErr) << ','
+                << number(r.stepsMean) << ',' << (r.hasReference ? number(r.refFailPercent) : "") << ','
+                << number(r.planTime) << "\r\n";
+        }
+        return out.str();
     }
 
     std::string markdownTable(const std::vector<ResultRow> &rows)
