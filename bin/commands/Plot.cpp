@@ -7,6 +7,7 @@
 
 #include "CommandRegistry.h"
 #include "OutputChecks.h"
+#include "ResultFiles.h"
 #include "ropras/core/Error.h"
 #include "ropras/scenarios/ResultPlot.h"
 #include "ropras/scenarios/ResultTable.h"
@@ -30,21 +31,7 @@ namespace
         ropras::bin::refuseOverwritingInputs("--out", o.out, o.files);
         const sc::PlotMetric metric = sc::plotMetricFromName(o.y);
         sc::ResultTable table;  // reads and validates the records as `ropras table` does
-        for (const auto &file : o.files)
-        {
-            if (table.addFile(file) == 0)
-            {
-                std::cerr << "ropras plot: warning: " << file << " holds no episode record\n";
-            }
-        }
-        for (const auto &warning : table.warnings())
-        {
-            std::cerr << "ropras plot: warning: " << warning << '\n';
-        }
-        if (table.size() == 0)
-        {
-            throw ropras::Error("no episode records in " + std::to_string(o.files.size()) + " file(s)");
-        }
+        ropras::bin::readResultFiles(table, o.files, "ropras plot");
         auto series = sc::plotSeries(table.records(), table.recordSources(), o.x, metric);
         for (const auto &prefix : o.flat)
         {

@@ -7,6 +7,7 @@
 
 #include "CommandRegistry.h"
 #include "OutputChecks.h"
+#include "ResultFiles.h"
 #include "ropras/core/Error.h"
 #include "ropras/scenarios/ResultTable.h"
 
@@ -34,21 +35,7 @@ namespace
         ropras::bin::refuseOverwritingInputs("--out", o.out, o.files);
         ropras::bin::refuseOverwritingInputs("--csv", o.csv, o.files);
         ropras::scenarios::ResultTable table;
-        for (const auto &file : o.files)
-        {
-            if (table.addFile(file) == 0)
-            {
-                std::cerr << "ropras table: warning: " << file << " holds no episode record\n";
-            }
-        }
-        for (const auto &warning : table.warnings())
-        {
-            std::cerr << "ropras table: warning: " << warning << '\n';
-        }
-        if (table.size() == 0)
-        {
-            throw ropras::Error("no episode records in " + std::to_string(o.files.size()) + " file(s)");
-        }
+        ropras::bin::readResultFiles(table, o.files, "ropras table");
         const std::string markdown = table.markdown();
         std::cout << markdown;
         if (!o.out.empty())

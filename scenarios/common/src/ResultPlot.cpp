@@ -9,6 +9,7 @@
 #include "SvgPicture.h"
 
 #include "ropras/core/Error.h"
+#include "ropras/scenarios/ResultTable.h"
 
 namespace ropras::scenarios
 {
@@ -24,15 +25,6 @@ namespace ropras::scenarios
             return found ? it->get<double>() : 0.0;
         }
 
-        std::string solverName(const std::string &solver)
-        {
-            static const std::map<std::string, std::string> names{{"ropras3", "ROP-RAS3"},   {"pomcp", "POMCP"},
-                                                                  {"rpomcp", "R-POMCP"},     {"bplan", "B-plan"},
-                                                                  {"refbasic", "Ref-Basic"}, {"rbss", "RBSS"}};
-            const auto it = names.find(solver);
-            return it == names.end() ? solver : it->second;
-        }
-
         std::string shortValue(const nlohmann::json &v)
         {
             if (!v.is_number())
@@ -42,26 +34,6 @@ namespace ropras::scenarios
             std::ostringstream out;
             out << v.get<double>();
             return out.str();
-        }
-
-        double mean(const std::vector<double> &v)
-        {
-            double sum = 0.0;
-            for (const double x : v)
-                sum += x;
-            return v.empty() ? 0.0 : sum / static_cast<double>(v.size());
-        }
-
-        double standardError(const std::vector<double> &v)
-        {
-            if (v.size() < 2)
-                return 0.0;
-            const double m = mean(v);
-            double squares = 0.0;
-            for (const double x : v)
-                squares += (x - m) * (x - m);
-            const double n = static_cast<double>(v.size());
-            return std::sqrt(squares / (n - 1.0) / n);
         }
 
         double metricValue(const nlohmann::json &r, PlotMetric metric)
@@ -85,7 +57,7 @@ namespace ropras::scenarios
         {
             const std::string solver = r.value("solver", std::string("?"));
             nlohmann::json id = {{"scenario", r.value("scenario", std::string("?"))}, {"solver", solver}};
-            std::string label = solverName(solver);
+            std::string label = solverDisplayName(solver);
             std::vector<std::string> extras;
             if (solver != "pomcp")
             {
@@ -253,7 +225,7 @@ namespace ropras::scenarios
                 PlotPoint p;
                 p.x = entry.first;
                 p.episodes = entry.second.size();
-                p.y = mean(entry.second);
+                p.y = sampleMean(entry.second);
                 if (metric == PlotMetric::SUCCESS)
                 {
                     const double share = p.y / 100.0;

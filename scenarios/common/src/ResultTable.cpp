@@ -141,41 +141,6 @@ namespace ropras::scenarios
             return buffer;
         }
 
-        double mean(const std::vector<double> &v)
-        {
-            double sum = 0.0;
-            for (const double x : v)
-            {
-                sum += x;
-            }
-            return v.empty() ? 0.0 : sum / static_cast<double>(v.size());
-        }
-
-        double standardError(const std::vector<double> &v)
-        {
-            if (v.size() < 2)
-            {
-                return 0.0;
-            }
-            const double m = mean(v);
-            double squares = 0.0;
-            for (const double x : v)
-            {
-                squares += (x - m) * (x - m);
-            }
-            const double n = static_cast<double>(v.size());
-            return std::sqrt(squares / (n - 1.0) / n);
-        }
-
-        std::string solverDisplay(const std::string &solver)
-        {
-            static const std::map<std::string, std::string> names{{"ropras3", "ROP-RAS3"},   {"pomcp", "POMCP"},
-                                                                  {"rpomcp", "R-POMCP"},     {"bplan", "B-plan"},
-                                                                  {"refbasic", "Ref-Basic"}, {"rbss", "RBSS"}};
-            const auto it = names.find(solver);
-            return it == names.end() ? solver : it->second;
-        }
-
         int solverRank(const std::string &solver)
         {
             static const std::vector<std::string> order{"bplan", "pomcp", "refbasic", "rpomcp", "ropras3"};
@@ -441,24 +406,59 @@ namespace ropras::scenarios
             {
                 row.scenario += " (config " + std::to_string(configRank(g) + 1) + ")";
             }
-            row.solver = solverDisplay(g->solver) + (g->extras.empty() ? "" : " [" + g->extras + "]");
+            row.solver = solverDisplayName(g->solver) + (g->extras.empty() ? "" : " [" + g->extras + "]");
             row.heuristic = g->heuristic;
             row.budget = g->budget;
             row.episodes = g->rewards.size();
             row.successPercent = 100.0 * static_cast<double>(g->successes) / static_cast<double>(row.episodes);
-            row.rewardMean = mean(g->rewards);
+            row.rewardMean = sampleMean(g->rewards);
             row.rewardStdErr = standardError(g->rewards);
-            row.discountedMean = mean(g->discounted);
+            row.discountedMean = sampleMean(g->discounted);
             row.discountedStdErr = standardError(g->discounted);
-            row.stepsMean = mean(g->steps);
-            row.simsPerCall = mean(g->sims);
+            row.stepsMean = sampleMean(g->steps);
+            row.simsPerCall = sampleMean(g->sims);
             row.hasSimulations = std::any_of(g->sims.begin(), g->sims.end(), [](double s) { return s > 0.0; });
-            row.refFailPercent = 100.0 * mean(g->refFailures);
+            row.refFailPercent = 100.0 * sampleMean(g->refFailures);
             row.hasReference = g->solver != "pomcp" && (!g->refCounted || g->refRequested > 0);
-            row.planTime = mean(g->planTimes);
+            row.planTime = sampleMean(g->planTimes);
             out.push_back(std::move(row));
         }
         return out;
+    }
+
+    double sampleMean(const std::vector<double> &v)
+    {
+        double sum = 0.0;
+        for (const double x : v)
+        {
+            sum += x;
+        }
+        return v.empty() ? 0.0 : sum / static_cast<double>(v.size());
+    }
+
+    double standardError(const std::vector<double> &v)
+    {
+        if (v.size() < 2)
+        {
+            return 0.0;
+        }
+        const double m = sampleMean(v);
+        double squares = 0.0;
+        for (const double x : v)
+        {
+            squares += (x - m) * (x - m);
+        }
+        const double n = static_cast<double>(v.size());
+        return std::sqrt(squares / (n - 1.0) / n);
+    }
+
+    std::string solverDisplayName(const std::string &solver)
+    {
+        static const std::map<std::string, std::string> names{{"ropras3", "ROP-RAS3"},   {"pomcp", "POMCP"},
+                                                              {"rpomcp", "R-POMCP"},     {"bplan", "B-plan"},
+                                                              {"refbasic", "Ref-Basic"}, {"rbss", "RBSS"}};
+        const auto it = names.find(solver);
+        return it == names.end() ? solver : it->second;
     }
 
     std::string ResultTable::markdown() const

@@ -114,6 +114,12 @@ namespace ropras::scenarios
     /** \brief The Markdown table of \a rows (see ResultTable::markdown()). */
     std::string markdownTable(const std::vector<ResultRow> &rows);
 
+    /// mean of \a v (0 when empty) and its standard error (sample standard deviation / sqrt(n); 0 for n < 2)
+    double sampleMean(const std::vector<double> &v);
+    double standardError(const std::vector<double> &v);
+    /// the solver's name in the paper's spelling (ropras3 -> ROP-RAS3, ...; unknown names unchanged)
+    std::string solverDisplayName(const std::string &solver);
+
     /** \brief The CSV table of \a rows (see ResultTable::csv()). */
     std::string csvTable(const std::vector<ResultRow> &rows);
 }  // namespace ropras::scenarios
