@@ -7,6 +7,7 @@
 
 #include "CommandRegistry.h"
 #include "OutputChecks.h"
+#include "ResultFiles.h"
 #include "ropras/core/Error.h"
 #include "ropras/scenarios/ResultTable.h"
 
@@ -16,37 +17,34 @@ namespace
     {
         std::vector<std::string> files;
         std::string out;
+        std::string csv;
     };
+
+    void writeFile(const std::string &option, const std::string &path, const std::string &text)
+    {
+        std::ofstream file(path);
+        file << text;
+        if (!file)
+        {
+            throw ropras::Error(option + ": cannot write \"" + path + "\"");
+        }
+    }
 
     int run(const TableOptions &o)
     {
         ropras::bin::refuseOverwritingInputs("--out", o.out, o.files);
+        ropras::bin::refuseOverwritingInputs("--csv", o.csv, o.files);
         ropras::scenarios::ResultTable table;
-        for (const auto &file : o.files)
-        {
-            if (table.addFile(file) == 0)
-            {
-                std::cerr << "ropras table: warning: " << file << " holds no episode record\n";
-            }
-        }
-        for (const auto &warning : table.warnings())
-        {
-            std::cerr << "ropras table: warning: " << warning << '\n';
-        }
-        if (table.size() == 0)
-        {
-            throw ropras::Error("no episode records in " + std::to_string(o.files.size()) + " file(s)");
-        }
+        ropras::bin::readResultFiles(table, o.files, "ropras table");
         const std::string markdown = table.markdown();
         std::cout << markdown;
         if (!o.out.empty())
         {
-            std::ofstream file(o.out);
-            file << markdown;
-            if (!file)
-            {
-                throw ropras::Error("--out: cannot write \"" + o.out + "\"");
-            }
+            writeFile("--out", o.out, markdown);
+        }
+        if (!o.csv.empty())
+        {
+            writeFile("--csv", o.csv, table.csv());
         }
         return 0;
     }
@@ -58,6 +56,7 @@ namespace
             ->required()
             ->check(CLI::ExistingFile);
         app.add_option("--out", o->out, "Also write the Markdown table to this file");
+        app.add_option("--csv", o->csv, "Also write the rows as CSV (full precision, standard errors) to this file");
         return [o] { return run(*o); };
     }
 

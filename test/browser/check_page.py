@@ -7,8 +7,9 @@ check_page.py --chromium PATH --page PAGE.html --screenshot OUT.png [--expect KE
    data-errors="0", every --expect must hold for its data-* attributes (e.g. boxes=19, particles>=1000), and
    chromium's log must hold no script error (an "Uncaught" exception or a console error of the page).
 2. --screenshot: the PNG, decoded here (zlib and the PNG filters, no imaging library needed), must not be blank:
-   the 3-D view (the right half of the picture, away from the control panel) needs at least 16 distinct colours
-   and its most common colour must cover less than 97 % of it.
+   the 3-D view (the right half of the picture, away from the control panel; --region full: the whole picture,
+   for pages without a 3-D view) needs at least 16 distinct colours and its most common colour must cover less
+   than 97 % of it.
 Exit code 0 when every check passes, 1 with a message naming the failed check, 77 (skip) without chromium.
 """
 import argparse
@@ -81,12 +82,12 @@ def decode_png(path):
     return width, height, bpp, rows
 
 
-def colour_variety(path):
+def colour_variety(path, region="right"):
     width, height, bpp, rows = decode_png(path)
     counts = {}
     for y in range(0, height, 2):
         row = rows[y]
-        for x in range(width // 2, width, 2):
+        for x in range(0 if region == "full" else width // 2, width, 2):
             key = row[x * bpp:x * bpp + 3]
             counts[key] = counts.get(key, 0) + 1
     total = sum(counts.values())
@@ -119,6 +120,8 @@ def main():
     ap.add_argument("--window", default="1280,800")
     ap.add_argument("--hash", default="", help="appended to the page's URL, e.g. #measure")
     ap.add_argument("--expect", action="append", default=[])
+    ap.add_argument("--region", choices=["right", "full"], default="right",
+                    help="part of the screenshot that must not be blank")
     a = ap.parse_args()
     chromium = shutil.which(a.chromium)
     if not chromium:
@@ -137,7 +140,8 @@ def main():
                               capture_output=True, text=True, timeout=120)
     failures = []
     log = dom.stderr.splitlines()
-    script_errors = [line for line in log if "Uncaught" in line or ("CONSOLE" in line and "ropras view" in line)]
+    script_errors = [line for line in log if "Uncaught" in line or
+                     ("CONSOLE" in line and ("ropras view" in line or "ropras tree page" in line))]
     if script_errors:
         failures.append("script errors in chromium's log:\n  " + "\n  ".join(script_errors))
     parser = StatsParser()
@@ -156,9 +160,9 @@ def main():
     if not os.path.exists(a.screenshot):
         failures.append("chromium wrote no screenshot (exit code %d): %s" % (shot.returncode, shot.stderr[-500:]))
     else:
-        colours, share = colour_variety(a.screenshot)
-        print("screenshot %s: %d colours in the 3-D view, the most common covers %.1f %%" %
-              (a.screenshot, colours, 100 * share))
+        colours, share = colour_variety(a.screenshot, a.region)
+        print("screenshot %s: %d colours in the %s, the most common covers %.1f %%" %
+              (a.screenshot, colours, "3-D view" if a.region == "right" else "page", 100 * share))
         if colours < 16 or share >= 0.97:
             failures.append("the screenshot is blank (%d colours, %.1f %% one colour)" % (colours, 100 * share))
     for f in failures:

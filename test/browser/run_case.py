@@ -8,8 +8,11 @@ episode: `ropras run --record` a maze2d episode, `ropras view` it; the page must
 motion:  `ropras plan` a Panda motion (robots/panda) in scenes/tabletop.yaml, `ropras view` it; the page must draw
          the scene's primitives (counted here from the YAML text), the robot's spheres (as `ropras plan` reports
          them) and one frame per joint step.
+tree:    `ropras run --dump-tree` the first planning call of a maze2d episode; its HTML page, opened with #expand-all,
+         must hold and draw every belief and action node of the JSON beside it (counted here), all reachable
+         from the root.
 Then check_page.py: no script error, the counts in #ropras-stats, a screenshot that is not blank.
-Exit code 77 (skip) without chromium or three.js.
+Exit code 77 (skip) without chromium, or without three.js for the viewer's cases.
 """
 import argparse
 import json
@@ -107,24 +110,43 @@ def motion(a):
                   "body-spheres=%d" % spheres, "bodies=1", "paths=1", "frames>=%d" % waypoints]
 
 
+def tree_case(a):
+    dump = os.path.join(a.work, "trees")
+    shutil.rmtree(dump, ignore_errors=True)
+    run([a.ropras, "run", "--scenario", "maze2d", "--episodes", "1", "--sims", "60", "--seed", "3", "--threads", "1",
+         "--dump-tree", dump, "--dump-calls", "0", "--quiet"])
+    with open(os.path.join(dump, "maze2d-ropras3-0-plan0.json")) as f:
+        tree = json.load(f)
+    beliefs, actions = len(tree["beliefs"]), len(tree["actions"])
+    if beliefs < 2 or actions < 2:
+        raise SystemExit("FAILED: the dumped tree is too small to test the page (%d beliefs, %d actions)" %
+                         (beliefs, actions))
+    nodes = beliefs + actions
+    return os.path.join(dump, "maze2d-ropras3-0-plan0.html"), [
+        "beliefs=%d" % beliefs, "actions=%d" % actions, "reachable=%d" % nodes, "drawn=%d" % nodes,
+        "simulations=%d" % tree["simulations"]]
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--ropras", required=True)
     ap.add_argument("--source", required=True)
     ap.add_argument("--work", required=True)
-    ap.add_argument("--case", choices=["episode", "motion"], required=True)
+    ap.add_argument("--case", choices=["episode", "motion", "tree"], required=True)
     ap.add_argument("--chromium", default="chromium")
     a = ap.parse_args()
     if not shutil.which(a.chromium):
         print("SKIP: no %s on this machine (apt-get install chromium; scripts/install-deps.sh installs it)" %
               a.chromium)
         return check_page.SKIP
-    if not os.path.exists("/usr/share/javascript/three/three.min.js"):
+    if a.case != "tree" and not os.path.exists("/usr/share/javascript/three/three.min.js"):
         print("SKIP: no three.js (apt-get install libjs-three; scripts/install-deps.sh installs it)")
         return check_page.SKIP
     os.makedirs(a.work, exist_ok=True)
-    page, expect = episode(a) if a.case == "episode" else motion(a)
+    page, expect = {"episode": episode, "motion": motion, "tree": tree_case}[a.case](a)
     args = ["--chromium", a.chromium, "--page", page, "--screenshot", page[:-5] + ".png"]
+    if a.case == "tree":
+        args += ["--hash", "#expand-all", "--region", "full"]
     for e in expect:
         args += ["--expect", e]
     print("expected from the inputs: " + " ".join(expect))

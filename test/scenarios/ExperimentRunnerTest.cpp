@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <set>
 #include <string>
@@ -15,6 +16,7 @@
 #include "ropras/core/Error.h"
 #include "ropras/scenarios/ExperimentRunner.h"
 #include "ropras/scenarios/ResultTable.h"
+#include "ropras/scenarios/TreeDump.h"
 #include "scenarios/ToyScenario.h"
 
 namespace ropras::scenarios::test
@@ -373,9 +375,35 @@ namespace ropras::scenarios::test
                     EXPECT_LE(below, a["visits"].get<std::size_t>()) << "at most one particle per visit goes down";
                     EXPECT_EQ(a["macro"].get<std::string>().rfind("len " + a["length"].dump(), 0), 0u);
                 }
+                // the page beside it carries the same document, and the script in place of its placeholder
+                auto pagePath = path;
+                pagePath.replace_extension(".html");
+                std::ifstream pageFile(pagePath);
+                ASSERT_TRUE(pageFile) << pagePath;
+                const std::string page((std::istreambuf_iterator<char>(pageFile)), std::istreambuf_iterator<char>());
+                const std::string open = "<script type=\"application/json\" id=\"ropras-data\">";
+                const auto from = page.find(open);
+                ASSERT_NE(from, std::string::npos);
+                const auto to = page.find("</script>", from);
+                ASSERT_NE(to, std::string::npos);
+                EXPECT_EQ(nlohmann::json::parse(page.substr(from + open.size(), to - from - open.size())), tree);
+                EXPECT_EQ(page.find("@ROPRAS_"), std::string::npos) << "a placeholder was left in the page";
+                EXPECT_NE(page.find("function openTo"), std::string::npos) << "the tree script is inline";
             }
         }
         std::filesystem::remove_all(dir);
+    }
+
+    TEST(ExperimentRunner, TreePageKeepsScriptEndTagsOutOfItsData)
+    {
+        const nlohmann::json tree = {{"solver", "x</script><b>"}, {"beliefs", nlohmann::json::array()}};
+        const std::string page = treePage(tree);
+        const std::string open = "<script type=\"application/json\" id=\"ropras-data\">";
+        const auto from = page.find(open);
+        ASSERT_NE(from, std::string::npos);
+        const auto to = page.find("</script>", from);
+        EXPECT_EQ(nlohmann::json::parse(page.substr(from + open.size(), to - from - open.size())), tree)
+            << "the data's own \"</script>\" must not end the element";
     }
 
     TEST(ExperimentRunner, BadSettingsThrowBeforeAnyEpisode)

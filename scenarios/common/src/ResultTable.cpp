@@ -141,41 +141,6 @@ namespace ropras::scenarios
             return buffer;
         }
 
-        double mean(const std::vector<double> &v)
-        {
-            double sum = 0.0;
-            for (const double x : v)
-            {
-                sum += x;
-            }
-            return v.empty() ? 0.0 : sum / static_cast<double>(v.size());
-        }
-
-        double standardError(const std::vector<double> &v)
-        {
-            if (v.size() < 2)
-            {
-                return 0.0;
-            }
-            const double m = mean(v);
-            double squares = 0.0;
-            for (const double x : v)
-            {
-                squares += (x - m) * (x - m);
-            }
-            const double n = static_cast<double>(v.size());
-            return std::sqrt(squares / (n - 1.0) / n);
-        }
-
-        std::string solverDisplay(const std::string &solver)
-        {
-            static const std::map<std::string, std::string> names{{"ropras3", "ROP-RAS3"},   {"pomcp", "POMCP"},
-                                                                  {"rpomcp", "R-POMCP"},     {"bplan", "B-plan"},
-                                                                  {"refbasic", "Ref-Basic"}, {"rbss", "RBSS"}};
-            const auto it = names.find(solver);
-            return it == names.end() ? solver : it->second;
-        }
-
         int solverRank(const std::string &solver)
         {
             static const std::vector<std::string> order{"bplan", "pomcp", "refbasic", "rpomcp", "ropras3"};
@@ -340,6 +305,8 @@ namespace ropras::scenarios
                 configs.push_back(it->second.configKey);
             }
         }
+        records_.push_back(record);
+        sources_.push_back(source);
         Group &group = it->second;
         group.rewards.push_back(reward);
         group.discounted.push_back(discounted);
@@ -439,29 +406,98 @@ namespace ropras::scenarios
             {
                 row.scenario += " (config " + std::to_string(configRank(g) + 1) + ")";
             }
-            row.solver = solverDisplay(g->solver) + (g->extras.empty() ? "" : " [" + g->extras + "]");
+            row.solver = solverDisplayName(g->solver) + (g->extras.empty() ? "" : " [" + g->extras + "]");
             row.heuristic = g->heuristic;
             row.budget = g->budget;
             row.episodes = g->rewards.size();
             row.successPercent = 100.0 * static_cast<double>(g->successes) / static_cast<double>(row.episodes);
-            row.rewardMean = mean(g->rewards);
+            row.rewardMean = sampleMean(g->rewards);
             row.rewardStdErr = standardError(g->rewards);
-            row.discountedMean = mean(g->discounted);
+            row.discountedMean = sampleMean(g->discounted);
             row.discountedStdErr = standardError(g->discounted);
-            row.stepsMean = mean(g->steps);
-            row.simsPerCall = mean(g->sims);
+            row.stepsMean = sampleMean(g->steps);
+            row.simsPerCall = sampleMean(g->sims);
             row.hasSimulations = std::any_of(g->sims.begin(), g->sims.end(), [](double s) { return s > 0.0; });
-            row.refFailPercent = 100.0 * mean(g->refFailures);
+            row.refFailPercent = 100.0 * sampleMean(g->refFailures);
             row.hasReference = g->solver != "pomcp" && (!g->refCounted || g->refRequested > 0);
-            row.planTime = mean(g->planTimes);
+            row.planTime = sampleMean(g->planTimes);
             out.push_back(std::move(row));
         }
         return out;
     }
 
+    double sampleMean(const std::vector<double> &v)
+    {
+        double sum = 0.0;
+        for (const double x : v)
+        {
+            sum += x;
+        }
+        return v.empty() ? 0.0 : sum / static_cast<double>(v.size());
+    }
+
+    double standardError(const std::vector<double> &v)
+    {
+        if (v.size() < 2)
+        {
+            return 0.0;
+        }
+        const double m = sampleMean(v);
+        double squares = 0.0;
+        for (const double x : v)
+        {
+            squares += (x - m) * (x - m);
+        }
+        const double n = static_cast<double>(v.size());
+        return std::sqrt(squares / (n - 1.0) / n);
+    }
+
+    std::string solverDisplayName(const std::string &solver)
+    {
+        static const std::map<std::string, std::string> names{{"ropras3", "ROP-RAS3"},   {"pomcp", "POMCP"},
+                                                              {"rpomcp", "R-POMCP"},     {"bplan", "B-plan"},
+                                                              {"refbasic", "Ref-Basic"}, {"rbss", "RBSS"}};
+        const auto it = names.find(solver);
+        return it == names.end() ? solver : it->second;
+    }
+
     std::string ResultTable::markdown() const
     {
         return markdownTable(rows());
+    }
+
+    std::string ResultTable::csv() const
+    {
+        return csvTable(rows());
+    }
+
+    std::string csvTable(const std::vector<ResultRow> &rows)
+    {
+        const auto field = [](const std::string &text)
+        {
+            if (text.find_first_of(",\"\r\n") == std::string::npos)
+                return text;
+            std::string out = "\"";
+            for (const char c : text)
+                out += c == '"' ? std::string("\"\"") : std::string(1, c);
+            return out + "\"";
+        };
+        const auto number = [](double v) { return format("%.17g", v); };
+        std::ostringstream out;
+        out << "scenario,solver,heuristic,budget,episodes,sims_per_call,success_percent,success_stderr,reward_mean,"
+               "reward_stderr,discounted_mean,discounted_stderr,steps_mean,ref_fail_percent,plan_time_s\r\n";
+        for (const auto &r : rows)
+        {
+            const double share = r.successPercent / 100.0;
+            const double successErr = 100.0 * std::sqrt(share * (1.0 - share) / static_cast<double>(r.episodes));
+            out << field(r.scenario) << ',' << field(r.solver) << ',' << field(r.heuristic) << ',' << field(r.budget)
+                << ',' << r.episodes << ',' << (r.hasSimulations ? number(r.simsPerCall) : "") << ','
+                << number(r.successPercent) << ',' << number(successErr) << ',' << number(r.rewardMean) << ','
+                << number(r.rewardStdErr) << ',' << number(r.discountedMean) << ',' << number(r.discountedStdErr) << ','
+                << number(r.stepsMean) << ',' << (r.hasReference ? number(r.refFailPercent) : "") << ','
+                << number(r.planTime) << "\r\n";
+        }
+        return out.str();
     }
 
     std::string markdownTable(const std::vector<ResultRow> &rows)

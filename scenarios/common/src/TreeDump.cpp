@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "ropras/core/Error.h"
+#include "ropras/scenarios/ScenarioRegistry.h"
+#include "ropras/scenarios/ViewerPage.h"
 
 namespace ropras::scenarios
 {
@@ -106,13 +108,47 @@ namespace ropras::scenarios
                 {"actions", std::move(actions)}};
     }
 
+    namespace
+    {
+        void writeText(const std::string &path, const std::string &text, const char *what)
+        {
+            std::ofstream file(path);
+            file << text << '\n';
+            if (!file)
+            {
+                throw Error(std::string("cannot write the search tree") + what + " \"" + path + "\"");
+            }
+        }
+    }  // namespace
+
     void writeTreeJson(const std::string &path, const pomdp::TreeSnapshot &tree, std::size_t plan, std::size_t step)
     {
-        std::ofstream file(path);
-        file << treeToJson(tree, plan, step).dump() << '\n';
-        if (!file)
+        writeText(path, treeToJson(tree, plan, step).dump(), "");
+    }
+
+    std::string treePage(const nlohmann::json &tree)
+    {
+        std::string page = embeddedFile("common/tree/tree.html");
+        const std::string data = "/*@ROPRAS_TREE_DATA@*/";
+        const std::string script = "/*@ROPRAS_TREE_SCRIPT@*/";
+        const auto at = page.find(data);
+        const auto sat = page.find(script);
+        if (at == std::string::npos || sat == std::string::npos || sat < at)
         {
-            throw Error("cannot write the search tree \"" + path + "\"");
+            throw Error("tree page template common/tree/tree.html: a placeholder is missing or out of order");
         }
+        // the script goes in first (it comes later in the page), so that no placeholder text inside the data is
+        // ever replaced
+        page.replace(sat, script.size(), scriptSafe(embeddedFile("common/tree/tree.js")));
+        page.replace(at, data.size(), scriptSafe(tree.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)));
+        return page;
+    }
+
+    void writeTreeFiles(const std::string &jsonPath, const pomdp::TreeSnapshot &tree, std::size_t plan,
+                        std::size_t step)
+    {
+        const nlohmann::json doc = treeToJson(tree, plan, step);
+        writeText(jsonPath, doc.dump(), "");
+        writeText(std::filesystem::path(jsonPath).replace_extension(".html").string(), treePage(doc), " page");
     }
 }  // namespace ropras::scenarios

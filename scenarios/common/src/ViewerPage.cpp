@@ -25,23 +25,6 @@ namespace ropras::scenarios
             }
         }
 
-        /** \brief \a text with every "</" written "<\/" (JSON and JS strings read it the same), so that no
-            "</script>" inside it ends the script element. */
-        std::string scriptSafe(const std::string &text)
-        {
-            std::string out;
-            out.reserve(text.size());
-            for (std::size_t i = 0; i < text.size(); ++i)
-            {
-                out += text[i];
-                if (text[i] == '<' && i + 1 < text.size() && text[i + 1] == '/')
-                {
-                    out += '\\';
-                }
-            }
-            return out;
-        }
-
         void replaceOnce(std::string &page, const std::string &key, const std::string &value)
         {
             const auto at = page.find(key);
@@ -52,6 +35,21 @@ namespace ropras::scenarios
             page.replace(at, key.size(), value);
         }
     }  // namespace
+
+    std::string scriptSafe(const std::string &text)
+    {
+        std::string out;
+        out.reserve(text.size());
+        for (std::size_t i = 0; i < text.size(); ++i)
+        {
+            out += text[i];
+            if (text[i] == '<' && i + 1 < text.size() && text[i + 1] == '/')
+            {
+                out += '\\';
+            }
+        }
+        return out;
+    }
 
     ThreeJs loadThreeJs(const std::string &dir)
     {

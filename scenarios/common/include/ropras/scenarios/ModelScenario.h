@@ -238,8 +238,8 @@ namespace ropras::scenarios
         std::size_t lastStep_{0};
     };
 
-    /** \brief Writes the search trees of the planning calls \a settings names (writeTreeJson()) and forwards
-        every event to \a inner (optional, e.g. an EpisodeRecorder). */
+    /** \brief Writes the search trees of the planning calls \a settings names (writeTreeFiles(): JSON and HTML) and
+       forwards every event to \a inner (optional, e.g. an EpisodeRecorder). */
     template <class M>
     class TreeDumper final : public pomdp::EpisodeObserver<M>
     {
@@ -266,7 +266,7 @@ namespace ropras::scenarios
         bool wantsTree(std::size_t plan) const override { return settings_.wants(plan); }
         void onTree(std::size_t plan, std::size_t step, const pomdp::TreeSnapshot &tree) override
         {
-            writeTreeJson(settings_.fileName(plan), tree, plan, step);
+            writeTreeFiles(settings_.fileName(plan), tree, plan, step);
         }
         void onStep(std::size_t step, const Action &a, const pomdp::StepResult<State, Observation> &result,
                     const std::vector<State> &particles) override

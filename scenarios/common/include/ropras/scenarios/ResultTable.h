@@ -76,6 +76,15 @@ namespace ropras::scenarios
             Steps | R.P. Fail % | Plan time (s) | Budget | Episodes. */
         std::string markdown() const;
 
+        /** \brief The same rows as CSV (RFC 4180 quoting), full precision: scenario, solver, heuristic, budget,
+            episodes, sims_per_call, success_percent, success_stderr, reward_mean, reward_stderr,
+            discounted_mean, discounted_stderr, steps_mean, ref_fail_percent, plan_time_s (empty for N/A). */
+        std::string csv() const;
+
+        /// the accepted records (duplicates dropped) in the order read, and where each came from ("file:line")
+        const std::vector<nlohmann::json> &records() const { return records_; }
+        const std::vector<std::string> &recordSources() const { return sources_; }
+
     private:
         struct Group
         {
@@ -98,10 +107,21 @@ namespace ropras::scenarios
         std::map<std::string, std::vector<std::string>> configs_;
         std::vector<std::string> scenarioOrder_;
         std::vector<std::string> warnings_;
+        std::vector<nlohmann::json> records_;
+        std::vector<std::string> sources_;
     };
 
     /** \brief The Markdown table of \a rows (see ResultTable::markdown()). */
     std::string markdownTable(const std::vector<ResultRow> &rows);
+
+    /// mean of \a v (0 when empty) and its standard error (sample standard deviation / sqrt(n); 0 for n < 2)
+    double sampleMean(const std::vector<double> &v);
+    double standardError(const std::vector<double> &v);
+    /// the solver's name in the paper's spelling (ropras3 -> ROP-RAS3, ...; unknown names unchanged)
+    std::string solverDisplayName(const std::string &solver);
+
+    /** \brief The CSV table of \a rows (see ResultTable::csv()). */
+    std::string csvTable(const std::vector<ResultRow> &rows);
 }  // namespace ropras::scenarios
 
 #endif

@@ -37,6 +37,16 @@ namespace ropras::scenarios
 
     /** \brief Writes treeToJson() to \a path; throws ropras::Error naming the file when it cannot be written. */
     void writeTreeJson(const std::string &path, const pomdp::TreeSnapshot &tree, std::size_t plan, std::size_t step);
+
+    /** \brief One standalone HTML page (inline script, works offline) drawing \a tree (a treeToJson() document) as a
+        collapsible tree: per belief node visits, V, particles, depth, primitive steps and the observation key; per
+        action node visits, Q, pi* and the macro in brief (scenarios/common/tree/, doc/pomdp.md). */
+    std::string treePage(const nlohmann::json &tree);
+
+    /** \brief Writes treeToJson() to \a jsonPath and treePage() beside it (the same name ending in .html); throws
+        ropras::Error naming the file that cannot be written. */
+    void writeTreeFiles(const std::string &jsonPath, const pomdp::TreeSnapshot &tree, std::size_t plan,
+                        std::size_t step);
 }  // namespace ropras::scenarios
 
 #endif

@@ -24,6 +24,10 @@ namespace ropras::scenarios
         episodeView() or motionView(), doc/viewer.md) in 3-D with an orbit camera, a time slider, play/pause and
         speed. three.js, the viewer script (scenarios/common/viewer/) and \a view as JSON are inline. */
     std::string viewerPage(const nlohmann::json &view, const ThreeJs &three);
+
+    /** \brief \a text with every "</" written "<\\/" (JSON and JS strings read it the same), so that no
+        "</script>" inside it ends the script element of a page. */
+    std::string scriptSafe(const std::string &text);
 }  // namespace ropras::scenarios
 
 #endif
