@@ -228,8 +228,9 @@ namespace
     std::function<int()> setup(CLI::App &app)
     {
         auto o = std::make_shared<RunOptions>();
-        app.add_option("--scenario", o->scenario,
-                       "Scenario: light-dark, maze2d, random3d-1 ... random3d-4, multi-drone, sphere-search");
+        app.add_option(
+            "--scenario", o->scenario,
+            "Scenario: light-dark, maze2d, random3d-1 ... random3d-4, multi-drone, sphere-search, shelf-move");
         app.add_option("--solver", o->solver, "ropras3, pomcp, rpomcp, bplan or refbasic")->capture_default_str();
         app.add_option("--heuristic", o->heuristic, "Sampling heuristic of the reference policy: uniform or dynamic")
             ->capture_default_str();
