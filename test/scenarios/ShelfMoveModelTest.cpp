@@ -248,7 +248,9 @@ namespace ropras::scenarios
         // free: the goal, terminal, with the goal reward
         Outcome place;
         ASSERT_TRUE(execute(at, space.goal(at), rng, place));
+        EXPECT_FALSE(m.reachedGoal(at));
         EXPECT_TRUE(place.terminal);
+        EXPECT_TRUE(m.reachedGoal(place.state));
         EXPECT_EQ(place.state.held, -1);
         EXPECT_GT(place.reward, 0.5 * m.config().goalReward);
     }

@@ -17,6 +17,21 @@ namespace ropras::scenarios
     {
         using State = ShelfMoveModel::State;
 
+        /// a reference macro from \a policy (up to 5 tries: a plan may time out on a loaded machine)
+        bool sampleMacro(pomdp::ReferencePolicy<ShelfMoveModel> &policy, const State &s, std::vector<State> &belief,
+                         pomdp::Rng &rng, std::vector<ShelfMoveAction> &macro)
+        {
+            for (int attempt = 0; attempt < 5; ++attempt)
+            {
+                macro.clear();
+                if (policy.sample(s, {belief.data(), belief.size()}, rng, macro))
+                {
+                    return true;
+                }
+            }
+            return false;
+        }
+
         /// the front cans on the lower free spots (slots 3, 4) and a top slot (0): the target can be grasped
         State cleared(const ShelfMoveModel &m)
         {
@@ -45,14 +60,14 @@ namespace ropras::scenarios
             settings.planner = planner;
             settings.heuristic = "dynamic";
             pomdp::ParameterMap params;
-            params.set("plan_time", 0.5);
+            params.set("plan_time", 2.0);
             auto policy = parts.referencePolicy(settings, params, 23);
             pomdp::Rng rng(9);
             // a collapsed belief (H = 0): Dynamic always picks the goal, which depends on what is held
             State s = cleared(m);
             std::vector<State> belief(5, s);
             std::vector<ShelfMoveAction> macro;
-            ASSERT_TRUE(policy->sample(s, {belief.data(), belief.size()}, rng, macro)) << planner;
+            ASSERT_TRUE(sampleMacro(*policy, s, belief, rng, macro)) << planner;
             ASSERT_FALSE(macro.empty());
             EXPECT_EQ(macro.back().event, GripperEvent::Close);
             for (std::size_t i = 0; i + 1 < macro.size(); ++i)
@@ -67,8 +82,7 @@ namespace ropras::scenarios
             ASSERT_EQ(s.held, static_cast<int>(m.config().targetCan)) << planner;
             // now the goal is the reserved slot: the macro ends with Open, and running it succeeds
             belief.assign(5, s);
-            macro.clear();
-            ASSERT_TRUE(policy->sample(s, {belief.data(), belief.size()}, rng, macro)) << planner;
+            ASSERT_TRUE(sampleMacro(*policy, s, belief, rng, macro)) << planner;
             EXPECT_EQ(macro.back().event, GripperEvent::Open);
             bool terminal = false;
             for (const auto &a : macro)

@@ -527,6 +527,14 @@ namespace ropras::scenarios
         return truth;
     }
 
+    bool ShelfMoveModel::reachedGoal(const State &s) const noexcept
+    {
+        const auto t = config_.targetCan;
+        const auto &slot = config_.slots[config_.reservedSlot];
+        return s.held != static_cast<int>(t) && std::hypot(s.can[t][0] - slot[0], s.can[t][1] - slot[1],
+                                                           s.can[t][2] - slot[2]) <= config_.placeTolerance;
+    }
+
     ShelfMoveModel::Action ShelfMoveModel::action(std::size_t i) const noexcept
     {
         Action a;

@@ -85,6 +85,8 @@ namespace ropras::scenarios
         double observationProbability(const Observation &o, const State &next, const Action &a) const noexcept;
         State sampleInitialState(pomdp::Rng &rng) const noexcept;
         double discount() const noexcept { return config_.discount; }
+        /// the goal: the target can released (not held) within place_tolerance of the reserved slot
+        bool reachedGoal(const State &s) const noexcept;
         /// POMCP / Ref-Basic / rollouts: +-step on one joint (2j: +, 2j + 1: -), 14 = close, 15 = open
         std::size_t numActions() const noexcept { return 2 * ARM_DOF + 2; }
         Action action(std::size_t i) const noexcept;
