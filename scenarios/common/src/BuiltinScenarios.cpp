@@ -9,6 +9,7 @@ namespace ropras::scenarios::detail
         addRandom3DScenarios(registry);
         addMultiDroneScenario(registry);
         addSphereSearchScenario(registry);
+        addShelfMoveScenario(registry);
         addCrossingScenario(registry);
         addRayDetectScenario(registry);
     }

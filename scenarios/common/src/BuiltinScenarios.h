@@ -16,6 +16,7 @@ namespace ropras::scenarios::detail
     void addRandom3DScenarios(ScenarioRegistry &registry);     ///< random3d-1 ... random3d-4
     void addMultiDroneScenario(ScenarioRegistry &registry);    ///< multi-drone
     void addSphereSearchScenario(ScenarioRegistry &registry);  ///< sphere-search
+    void addShelfMoveScenario(ScenarioRegistry &registry);     ///< shelf-move
     void addCrossingScenario(ScenarioRegistry &registry);      ///< stretch-crossing
     void addRayDetectScenario(ScenarioRegistry &registry);     ///< ray-detect
 

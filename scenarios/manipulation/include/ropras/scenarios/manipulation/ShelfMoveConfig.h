@@ -1,0 +1,77 @@
+#ifndef ROPRAS_SCENARIOS_MANIPULATION_SHELF_MOVE_CONFIG_H
+#define ROPRAS_SCENARIOS_MANIPULATION_SHELF_MOVE_CONFIG_H
+
+#include <array>
+#include <cstddef>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "ropras/scenarios/manipulation/PandaArm.h"
+
+namespace ropras::scenarios
+{
+    /// the cans of Shelf-Move (the paper's 4 cylinders: the target and 3 movable obstacles)
+    constexpr std::size_t SHELF_CANS = 4;
+
+    /** \brief The parameters of Shelf-Move (scenarios/manipulation/shelf-move/default.json; every key is
+        described in doc/scenario-shelf-move.md). Lengths in m, angles in rad. */
+    struct ShelfMoveConfig
+    {
+        std::array<double, ARM_DOF> start{};           ///< "start": the true initial configuration
+        std::string endEffector{"panda_grasptarget"};  ///< "end_effector"
+        /// "shelf": static boxes [x, y, z, size_x, size_y, size_z] (centre, full extents): boards and walls
+        std::vector<std::array<double, 6>> shelf;
+        double canRadius{0.03};  ///< "can_radius"
+        double canLength{0.14};  ///< "can_length"
+        /// "held_clearance": the held can's collision geometry is a chain of spheres along its axis, this far inside
+        /// its side and ends (so that it can leave its board and be set down on a slot)
+        double heldClearance{0.006};
+        std::array<std::array<double, 3>, SHELF_CANS> cans{};  ///< "cans": true centres (upright)
+        std::size_t targetCan{0};                              ///< "target_can": index into cans
+        std::vector<std::array<double, 3>> slots;              ///< "slots": can centres where a release lands
+        std::size_t reservedSlot{1};                           ///< "reserved_slot": the target's slot (index)
+        std::array<double, 3> approach{{1.0, 0.0, 0.0}};       ///< "grasp_approach": world approach axis
+        double graspOffset{0.015};            ///< "grasp_offset": the can's axis this far beyond the EE along its z
+        double graspTolerance{0.02};          ///< "grasp_tolerance": EE to the can's axis for a grasp
+        double graspAxisTolerance{0.2};       ///< "grasp_axis_tolerance": EE x axis to vertical (rad)
+        double placeTolerance{0.04};          ///< "place_tolerance": held can centre to a slot centre
+        double senseDistance{0.15};           ///< "sense_distance": EE to a can centre for a detection
+        double canObservationNoise{0.04};     ///< "can_observation_noise": U(-w, w) per axis
+        double observationSoftening{0.01};    ///< "observation_softening": Gaussian tail outside the box (m)
+        double step{0.1};                     ///< "step": L2 norm of a primitive dq
+        bool waypointActions{true};           ///< "action_mode": "waypoint" (true) or "delta"
+        double transitionSigma{0.001};        ///< "transition_sigma": N(0, s) per joint and step
+        double observationSigma{0.02};        ///< "observation_sigma": N(0, s) per observed joint
+        double initialSigma{0.001};           ///< "initial_sigma": joints in b0
+        double initialCanSigma{0.03};         ///< "initial_can_sigma": can x and y in b0
+        double reinvigorateSigma{0.001};      ///< "reinvigorate_sigma": joint jitter per particle
+        double reinvigorateCanSigma{0.005};   ///< "reinvigorate_can_sigma": can x, y jitter per particle
+        double reinvigorateProbability{0.1};  ///< "reinvigorate_probability": share of particles jittered
+        double stepReward{-0.1};              ///< "step_reward"
+        double goalReward{800.0};             ///< "goal_reward" (terminal)
+        double discount{0.9999};              ///< "discount"
+        std::size_t horizon{3000};            ///< "horizon"
+        double resolution{0.02};              ///< "resolution": motion-check step (rad, per joint)
+        double observationCanBin{0.04};       ///< "observation_can_bin": bin of observed can positions
+        double observationJointBin{0.0};      ///< "observation_joint_bin": 0 = joints not binned
+        double entropyBin{0.02};              ///< "entropy_bin": cell of can positions for H(b)
+        // "planning": the reference policy
+        double planSeconds{1.0};         ///< "planning.plan_seconds": default time budget per call
+        double referencePlanTime{0.05};  ///< "planning.reference_plan_time": per reference plan (s)
+        double planningMargin{0.01};     ///< "planning.margin": the planner's shelf boxes grown by this
+        double plannerRange{0.5};        ///< "planning.planner_range": VectorizedRRTConnect range (rad)
+        std::size_t ikRestarts{8};       ///< "planning.ik_restarts": IK random restarts per target
+        double senseFraction{0.7};       ///< "planning.sense_fraction": sensing points at this share of sense_distance
+        double placeLift{0.005};         ///< "planning.place_lift": release this far above the slot centre
+        std::map<std::string, double> defaults;  ///< "defaults": solver / filter / policy parameters
+        nlohmann::json json;                     ///< the effective configuration
+
+        /** \brief Reads and validates every key of \a json: throws ropras::Error naming \a scenario, the key
+            and the value (missing, unknown, wrong type, non-finite, out of range). */
+        static ShelfMoveConfig fromJson(const nlohmann::json &json, const std::string &scenario);
+    };
+}  // namespace ropras::scenarios
+
+#endif

@@ -1,0 +1,120 @@
+#ifndef ROPRAS_SCENARIOS_MANIPULATION_SHELF_MOVE_PLANNING_H
+#define ROPRAS_SCENARIOS_MANIPULATION_SHELF_MOVE_PLANNING_H
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "ropras/core/Rng.h"
+#include "ropras/ompl_ext/kinematics/InverseKinematics.h"
+#include "ropras/pomdp/OmplReferencePolicy.h"
+#include "ropras/pomdp/TargetSpace.h"
+#include "ropras/scenarios/manipulation/ShelfMoveModel.h"
+
+namespace ropras::scenarios
+{
+    /** \brief An informative state of Shelf-Move: grasp can \a can (a side grasp at its centre, then Close),
+        sense can \a can (the end effector within sense_distance of its centre) or place the held can on slot
+        \a slot (then Open). \a point is the workspace point the end effector goes to (the Dynamic heuristic's
+        distance is measured to it). */
+    struct ShelfTarget
+    {
+        enum class Kind
+        {
+            Grasp,
+            Sense,
+            Place
+        };
+        Kind kind{Kind::Grasp};
+        int can{-1};
+        int slot{-1};
+        std::array<double, 3> point{{0.0, 0.0, 0.0}};
+    };
+
+    /** \brief Goal configurations of ShelfTargets in a particle's scene: full-pose IK for a grasp (the end
+        effector at the can's centre, its z axis along grasp_approach, its x axis vertical: both signs are
+        tried) and for a place (the same orientations, the held can's centre place_lift above the slot
+        centre); position IK for a sense target: points at planning.sense_fraction x sense_distance from the
+        can centre, toward the robot and tilted up by 0, 30, 60 and 90 degrees (yaw 0, +-30 degrees).
+        Every solution is collision-free in the scene passed (attached can included). Not thread-safe. */
+    class ShelfMoveIk
+    {
+    public:
+        ShelfMoveIk(std::shared_ptr<const ShelfMoveModel> model, std::size_t restarts, std::uint64_t seed);
+
+        /** \brief A configuration for \a target, seen from \a particle, collision-free in \a scene; false
+            when none was found. noexcept (IK outcomes are values). */
+        bool solve(const ShelfMoveModel::State &particle, const ShelfTarget &target, const ompl_ext::Environment &scene,
+                   double *q) noexcept;
+
+        /// the grasp orientations of the end effector (z along the approach, x up or down)
+        std::array<Eigen::Matrix3d, 2> graspOrientations() const;
+
+    private:
+        std::shared_ptr<const ShelfMoveModel> model_;
+        ompl_ext::InverseKinematics ik_;
+        ompl_ext::IkWorkspace workspace_;
+        ompl_ext::IkOptions options_;
+        core::Rng rng_;
+    };
+
+    /** \brief The informative states of Shelf-Move, conditioned on what the particle holds. Holding
+        nothing: the goal is grasping the target can; the others are grasping each other can and sensing
+        each can. Holding the target: the goal is placing it on the reserved slot; the others are the other
+        slots and sensing. Holding another can: the goal is the free slot (not the reserved one) nearest to
+        the hand; the others are every other slot and sensing. Distance: the end effector's to the target's
+        point. Entropy bins: the x, y cells (entropy_bin) of the cans not held (H normalised by log N). */
+    class ShelfMoveTargetSpace final : public pomdp::TargetSpace<ShelfMoveModel::State, ShelfTarget>
+    {
+    public:
+        explicit ShelfMoveTargetSpace(std::shared_ptr<const ShelfMoveModel> model);
+
+        ShelfTarget goal(const ShelfMoveModel::State &particle) const override;
+        std::size_t numInformative(const ShelfMoveModel::State &particle) const override;
+        ShelfTarget informative(const ShelfMoveModel::State &particle, std::size_t i) const override;
+        double distance(const ShelfMoveModel::State &agent, const ShelfTarget &target) const override;
+        std::uint64_t entropyBin(const ShelfMoveModel::State &particle) const override;
+        std::size_t numEntropyBins() const override { return 0; }
+
+        ShelfTarget grasp(const ShelfMoveModel::State &particle, int can) const;
+        ShelfTarget sense(const ShelfMoveModel::State &particle, int can) const;
+        ShelfTarget place(int slot) const;
+
+    private:
+        /// the slots offered when holding: every slot but the reserved one
+        std::size_t otherSlot(std::size_t i) const;
+        std::shared_ptr<const ShelfMoveModel> model_;
+    };
+
+    /** \brief The OMPL planning adapter of Shelf-Move: the configuration is the joints; a target's
+        configuration comes from ShelfMoveIk in the particle's planning scene (the shelf grown by
+        planning.margin, the particle's cans, the held can attached), which is also the scene the planner
+        plans in; PathToMacroAction "entire motion path": the whole path cut into steps of L2 norm <= step,
+        as joint displacements, the last one carrying Close (grasp targets) or Open (place targets). The IK
+        and the last target are mutable: one adapter per reference policy (one thread). */
+    class ShelfMoveAdapter final
+        : public pomdp::OmplPlanningAdapter<ShelfMoveModel::State, ShelfMoveAction, ShelfTarget>
+    {
+    public:
+        ShelfMoveAdapter(std::shared_ptr<const ShelfMoveModel> model, std::unique_ptr<ShelfMoveIk> ik);
+
+        void configuration(const ShelfMoveModel::State &state, double *q) const override;
+        bool targetConfiguration(const ShelfMoveModel::State &start, const ShelfTarget &target,
+                                 double *q) const override;
+        std::shared_ptr<const ompl_ext::Environment> environment(const ShelfMoveModel::State &particle) const override;
+        bool pathToMacroAction(const ShelfMoveModel::State &start, const double *waypoints, std::size_t count,
+                               std::vector<ShelfMoveAction> &out) const override;
+
+    private:
+        std::shared_ptr<const ShelfMoveModel> model_;
+        std::unique_ptr<ShelfMoveIk> ik_;
+        mutable ShelfTarget last_{};
+        mutable std::shared_ptr<ompl_ext::Environment> scene_;
+        mutable ShelfMoveModel::State sceneOf_{};
+        mutable std::vector<double> points_;
+    };
+}  // namespace ropras::scenarios
+
+#endif

@@ -1,0 +1,129 @@
+// Shelf-Move (the paper's pick-and-place of a target can from the back of a shelf): registration and assembly.
+#include "ropras/scenarios/manipulation/ShelfMoveScenario.h"
+
+#include <string>
+
+#include "BuiltinScenarios.h"
+#include "ropras/pomdp/OmplReferencePolicy.h"
+#include "ropras/scenarios/manipulation/ShelfMovePlanning.h"
+
+namespace ropras::scenarios
+{
+    namespace
+    {
+        constexpr const char *NAME = "shelf-move";
+        constexpr const char *DESCRIPTION =
+            "Shelf-Move: a 7-DoF Panda clears packed cans off a shelf and places the target can on its reserved "
+            "top slot (H = 3000)";
+
+        /// the renderer's format (doc/scenarios.md): the shelf boxes as obstacles, cans and slots as discs
+        nlohmann::json shelfMoveScene(const ShelfMoveConfig &config, const ShelfMoveModel &model)
+        {
+            nlohmann::json boxes = nlohmann::json::array();
+            for (const auto &b : config.shelf)
+            {
+                boxes.push_back({{b[0] - 0.5 * b[3], b[1] - 0.5 * b[4], b[2] - 0.5 * b[5]},
+                                 {b[0] + 0.5 * b[3], b[1] + 0.5 * b[4], b[2] + 0.5 * b[5]}});
+            }
+            nlohmann::json slots = nlohmann::json::array();
+            for (std::size_t i = 0; i < config.slots.size(); ++i)
+            {
+                const auto &s = config.slots[i];
+                slots.push_back({{"center", {s[0], s[1], s[2]}}, {"radius", config.canRadius}});
+            }
+            const auto &reserved = config.slots[config.reservedSlot];
+            const Eigen::Vector3d ee = model.endEffector(model.trueInitialState());
+            nlohmann::json discs = nlohmann::json::object();
+            for (std::size_t k = 0; k < SHELF_CANS; ++k)
+            {
+                discs["can" + std::to_string(k)] = config.canRadius;
+            }
+            return {
+                {"dims", 3},
+                {"bounds", {{-0.2, -0.6, 0.0}, {1.0, 0.6, 1.2}}},
+                {"walls", nlohmann::json::array()},
+                {"obstacles", boxes},
+                {"danger_zones", nlohmann::json::array()},
+                {"observation_zones", slots},
+                {"goal", {{{"center", {reserved[0], reserved[1], reserved[2]}}, {"radius", config.placeTolerance}}}},
+                {"starts", {{ee.x(), ee.y(), ee.z()}}},
+                {"discs", discs},
+                {"robot_radius", 0.02}};
+        }
+    }  // namespace
+
+    ScenarioParts<ShelfMoveModel> shelfMoveParts(const ScenarioOptions &options)
+    {
+        const nlohmann::json defaults = nlohmann::json::parse(embeddedFile("manipulation/shelf-move/default.json"));
+        const nlohmann::json json = applyOverrides(NAME, defaults, options);
+        const ShelfMoveConfig config = ShelfMoveConfig::fromJson(json, NAME);
+        auto arm = sharedPandaArm(config.endEffector);
+        auto model = std::make_shared<const ShelfMoveModel>(config, arm);
+        if (!arm->checker()->isValid(*model->makeScene(model->trueInitialState(), true), config.start.data()))
+        {
+            throw Error(std::string("scenario ") + NAME +
+                        ": key \"planning.margin\" = " + std::to_string(config.planningMargin) +
+                        ": the start is in collision with the shelf and cans grown by the margin");
+        }
+        auto space = std::make_shared<const ShelfMoveTargetSpace>(model);
+
+        ScenarioParts<ShelfMoveModel> parts;
+        parts.name = NAME;
+        parts.description = DESCRIPTION;
+        parts.config = json;
+        parts.horizon = config.horizon;
+        parts.defaultPlanSeconds = config.planSeconds;
+        parts.defaults = config.defaults;
+        parts.model = model;
+        parts.referencePolicy = [config, model, space](
+                                    const RunSettings &settings, const pomdp::ParameterMap &params,
+                                    std::uint64_t seed) -> std::unique_ptr<pomdp::ReferencePolicy<ShelfMoveModel>>
+        {
+            auto heuristic = makeSamplingHeuristic<ShelfMoveModel::State, ShelfTarget>(settings, space);
+            auto planner =
+                referencePlannerSettings(settings, params, config.referencePlanTime, config.resolution, seed);
+            if (planner.planner == "VectorizedRRTConnect")
+            {
+                planner.plannerParams["range"] = std::to_string(config.plannerRange);
+            }
+            auto ik = std::make_unique<ShelfMoveIk>(model, config.ikRestarts, seed ^ 0x5bd1e995ULL);
+            auto adapter = std::make_shared<const ShelfMoveAdapter>(model, std::move(ik));
+            return std::make_unique<pomdp::OmplReferencePolicy<ShelfMoveModel, ShelfTarget>>(
+                adapter, std::move(heuristic), model->arm().robot(), model->shelf(), planner);
+        };
+        parts.world = [model]() -> std::unique_ptr<pomdp::World<ShelfMoveModel>>
+        { return std::make_unique<pomdp::SimulatedWorld<ShelfMoveModel>>(model); };
+        parts.points = [model](const ShelfMoveModel::State &s, std::vector<Point3> &out)
+        {
+            const Eigen::Vector3d ee = model->endEffector(s);
+            out.push_back(Point3{ee.x(), ee.y(), ee.z()});
+            for (std::size_t k = 0; k < SHELF_CANS; ++k)
+            {
+                out.push_back(Point3{s.can[k][0], s.can[k][1], s.can[k][2]});
+            }
+        };
+        parts.pointLabels = {"end_effector", "can0", "can1", "can2", "can3"};
+        parts.robotUrdf = "robots/panda/panda.urdf";
+        parts.configuration = [](const ShelfMoveModel::State &s, std::vector<double> &q)
+        { q.assign(s.q, s.q + ARM_DOF); };
+        parts.event = [](const ShelfMoveModel::State &s) -> std::string
+        { return s.held >= 0 ? "holding-can" + std::to_string(s.held) : std::string(); };
+        parts.scene = shelfMoveScene(config, *model);
+        return parts;
+    }
+
+    std::unique_ptr<ModelScenario<ShelfMoveModel>> makeShelfMoveScenario(const ScenarioOptions &options)
+    {
+        return std::make_unique<ModelScenario<ShelfMoveModel>>(shelfMoveParts(options));
+    }
+
+    namespace detail
+    {
+        void addShelfMoveScenario(ScenarioRegistry &registry)
+        {
+            registry.add({NAME, DESCRIPTION, [](const ScenarioOptions &options) -> std::unique_ptr<Scenario> {
+                              return makeShelfMoveScenario(options);
+                          }});
+        }
+    }  // namespace detail
+}  // namespace ropras::scenarios

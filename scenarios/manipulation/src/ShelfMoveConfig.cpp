@@ -1,0 +1,149 @@
+#include "ropras/scenarios/manipulation/ShelfMoveConfig.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "ropras/scenarios/ConfigReader.h"
+
+namespace ropras::scenarios
+{
+    ShelfMoveConfig ShelfMoveConfig::fromJson(const nlohmann::json &json, const std::string &scenario)
+    {
+        const ConfigReader r(scenario, json);
+        r.requireKnown({"start",
+                        "end_effector",
+                        "shelf",
+                        "can_radius",
+                        "can_length",
+                        "held_clearance",
+                        "cans",
+                        "target_can",
+                        "slots",
+                        "reserved_slot",
+                        "grasp_approach",
+                        "grasp_offset",
+                        "grasp_tolerance",
+                        "grasp_axis_tolerance",
+                        "place_tolerance",
+                        "sense_distance",
+                        "can_observation_noise",
+                        "observation_softening",
+                        "step",
+                        "action_mode",
+                        "transition_sigma",
+                        "observation_sigma",
+                        "initial_sigma",
+                        "initial_can_sigma",
+                        "reinvigorate_sigma",
+                        "reinvigorate_can_sigma",
+                        "reinvigorate_probability",
+                        "step_reward",
+                        "goal_reward",
+                        "discount",
+                        "horizon",
+                        "resolution",
+                        "observation_can_bin",
+                        "observation_joint_bin",
+                        "entropy_bin",
+                        "planning",
+                        "defaults"});
+        ShelfMoveConfig c;
+        c.json = json;
+        const auto start = r.numbers("start", ARM_DOF);
+        std::copy(start.begin(), start.end(), c.start.begin());
+        const auto &ee = r.at("end_effector");
+        if (!ee.is_string() || ee.get<std::string>().empty())
+        {
+            r.fail("end_effector", "must be a link name, not " + ee.dump());
+        }
+        c.endEffector = ee.get<std::string>();
+        for (const auto &row : r.rows("shelf", 6))
+        {
+            if (!(row[3] > 0.0 && row[4] > 0.0 && row[5] > 0.0))
+            {
+                r.fail("shelf", "has a box with a size that is not > 0");
+            }
+            c.shelf.push_back({{row[0], row[1], row[2], row[3], row[4], row[5]}});
+        }
+        if (c.shelf.empty() || c.shelf.size() > 64)
+        {
+            r.fail("shelf", "must list 1 to 64 boxes, not " + std::to_string(c.shelf.size()));
+        }
+        c.canRadius = r.within("can_radius", 0.005, 0.2);
+        c.canLength = r.within("can_length", 0.01, 0.5);
+        c.heldClearance = r.within("held_clearance", 0.001, 0.5 * c.canRadius);
+        const auto cans = r.rows("cans", 3);
+        if (cans.size() != SHELF_CANS)
+        {
+            r.fail("cans", "must list exactly " + std::to_string(SHELF_CANS) + " can centres [x, y, z], not " +
+                               std::to_string(cans.size()));
+        }
+        for (std::size_t k = 0; k < SHELF_CANS; ++k)
+        {
+            c.cans[k] = {{cans[k][0], cans[k][1], cans[k][2]}};
+        }
+        c.targetCan = r.count("target_can", 0, SHELF_CANS - 1);
+        for (const auto &row : r.rows("slots", 3))
+        {
+            c.slots.push_back({{row[0], row[1], row[2]}});
+        }
+        if (c.slots.empty() || c.slots.size() > 32)
+        {
+            r.fail("slots", "must list 1 to 32 slots, not " + std::to_string(c.slots.size()));
+        }
+        c.reservedSlot = r.count("reserved_slot", 0, c.slots.size() - 1);
+        const auto approach = r.numbers("grasp_approach", 3);
+        const double norm = std::hypot(approach[0], approach[1], approach[2]);
+        if (!(norm > 1e-9) || std::abs(approach[2]) > 1e-9 * norm)
+        {
+            r.fail("grasp_approach", "must be a horizontal direction (z = 0, not zero)");
+        }
+        c.approach = {{approach[0] / norm, approach[1] / norm, 0.0}};
+        c.graspOffset = r.within("grasp_offset", -0.05, 0.1);
+        c.graspTolerance = r.within("grasp_tolerance", 1e-4, 0.2);
+        c.graspAxisTolerance = r.within("grasp_axis_tolerance", 0.0, 1.5);
+        c.placeTolerance = r.within("place_tolerance", 1e-4, 0.3);
+        c.senseDistance = r.within("sense_distance", 0.0, 2.0);
+        c.canObservationNoise = r.within("can_observation_noise", 1e-4, 1.0);
+        c.observationSoftening = r.within("observation_softening", 1e-5, 1.0);
+        c.step = r.within("step", 1e-4, 1.0);
+        const auto &mode = r.at("action_mode");
+        if (mode != "delta" && mode != "waypoint")
+        {
+            r.fail("action_mode", "must be \"delta\" or \"waypoint\", not " + mode.dump());
+        }
+        c.waypointActions = mode == "waypoint";
+        c.transitionSigma = r.within("transition_sigma", 0.0, 1.0);
+        c.observationSigma = r.within("observation_sigma", 1e-5, 1.0);
+        c.initialSigma = r.within("initial_sigma", 0.0, 1.0);
+        c.initialCanSigma = r.within("initial_can_sigma", 0.0, 0.5);
+        c.reinvigorateSigma = r.within("reinvigorate_sigma", 0.0, 1.0);
+        c.reinvigorateCanSigma = r.within("reinvigorate_can_sigma", 0.0, 0.5);
+        c.reinvigorateProbability = r.within("reinvigorate_probability", 0.0, 1.0);
+        c.stepReward = r.number("step_reward");
+        c.goalReward = r.number("goal_reward");
+        c.discount = r.within("discount", 1e-9, 1.0);
+        c.horizon = r.count("horizon", 1, 10000000);
+        c.resolution = r.within("resolution", 1e-4, 1.0);
+        c.observationCanBin = r.within("observation_can_bin", 1e-4, 10.0);
+        c.observationJointBin = r.within("observation_joint_bin", 0.0, 10.0);
+        c.entropyBin = r.within("entropy_bin", 1e-4, 10.0);
+        const ConfigReader p = r.sub("planning");
+        p.requireKnown({"plan_seconds", "reference_plan_time", "margin", "planner_range", "ik_restarts",
+                        "sense_fraction", "place_lift"});
+        c.planSeconds = p.positive("plan_seconds");
+        c.referencePlanTime = p.positive("reference_plan_time");
+        c.planningMargin = p.within("margin", 0.0, 0.1);
+        c.plannerRange = p.positive("planner_range");
+        c.ikRestarts = p.count("ik_restarts", 0, 10000);
+        c.senseFraction = p.within("sense_fraction", 0.0, 1.0);
+        c.placeLift = p.within("place_lift", 0.0, 0.1);
+        const ConfigReader d = r.sub("defaults");
+        for (const auto &item : r.at("defaults").items())
+        {
+            c.defaults[item.key()] = d.number(item.key());
+        }
+        return c;
+    }
+}  // namespace ropras::scenarios

@@ -1,0 +1,295 @@
+#include "ropras/scenarios/manipulation/ShelfMovePlanning.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <utility>
+
+#include "ropras/core/Error.h"
+#include "ropras/ompl_ext/kinematics/CollisionFreePredicate.h"
+
+namespace ropras::scenarios
+{
+    namespace
+    {
+        constexpr double PI = 3.14159265358979323846;
+
+        std::uint64_t mix(std::uint64_t h, std::int64_t v) noexcept
+        {
+            h ^= static_cast<std::uint64_t>(v) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+            h *= 0xbf58476d1ce4e5b9ULL;
+            return h ^ (h >> 31);
+        }
+
+        Eigen::Vector3d centre(const ShelfMoveModel::State &s, int k)
+        {
+            return Eigen::Vector3d(s.can[k][0], s.can[k][1], s.can[k][2]);
+        }
+
+        std::array<double, 3> array3(const Eigen::Vector3d &v)
+        {
+            return {{v.x(), v.y(), v.z()}};
+        }
+    }  // namespace
+
+    ShelfMoveIk::ShelfMoveIk(std::shared_ptr<const ShelfMoveModel> model, std::size_t restarts, std::uint64_t seed)
+        : model_(std::move(model)),
+          ik_(model_ ? model_->arm().endEffectorChain() : throw Error("ShelfMoveIk: null model")),
+          workspace_(ik_.makeWorkspace()),
+          rng_(seed)
+    {
+        options_.restarts = restarts;
+        options_.positionTolerance = 1e-4;
+        options_.orientationTolerance = 1e-3;
+        options_.validate();
+    }
+
+    std::array<Eigen::Matrix3d, 2> ShelfMoveIk::graspOrientations() const
+    {
+        const auto &a = model_->config().approach;
+        const Eigen::Vector3d z(a[0], a[1], a[2]);
+        std::array<Eigen::Matrix3d, 2> out;
+        for (int i = 0; i < 2; ++i)
+        {
+            const Eigen::Vector3d x = (i == 0 ? -1.0 : 1.0) * Eigen::Vector3d::UnitZ();
+            out[static_cast<std::size_t>(i)].col(0) = x;
+            out[static_cast<std::size_t>(i)].col(1) = z.cross(x);
+            out[static_cast<std::size_t>(i)].col(2) = z;
+        }
+        return out;
+    }
+
+    bool ShelfMoveIk::solve(const ShelfMoveModel::State &particle, const ShelfTarget &target,
+                            const ompl_ext::Environment &scene, double *q) noexcept
+    {
+        try
+        {
+            const ompl_ext::ConfigurationPredicate valid =
+                ompl_ext::collisionFreePredicate(*model_->arm().checker(), scene);
+            const Eigen::Vector3d p(target.point[0], target.point[1], target.point[2]);
+            if (target.kind == ShelfTarget::Kind::Sense)
+            {
+                const auto &a = model_->config().approach;
+                const double rho = model_->config().senseFraction * model_->config().senseDistance;
+                for (const double tilt : {0.0, 30.0, 60.0, 90.0})
+                {
+                    for (const double yaw : {0.0, 30.0, -30.0})
+                    {
+                        const double t = tilt * PI / 180.0, w = yaw * PI / 180.0;
+                        const Eigen::Vector3d back =
+                            Eigen::AngleAxisd(w, Eigen::Vector3d::UnitZ()) * Eigen::Vector3d(-a[0], -a[1], 0.0);
+                        const Eigen::Vector3d point =
+                            p + rho * (std::cos(t) * back + std::sin(t) * Eigen::Vector3d::UnitZ());
+                        const auto r = ik_.solve(ompl_ext::IkTarget::position(point), particle.q, rng_, workspace_, q,
+                                                 options_, &valid);
+                        if (r.status == ompl_ext::IkStatus::Solved)
+                        {
+                            return true;
+                        }
+                    }
+                }
+                return false;
+            }
+            for (const auto &rotation : graspOrientations())
+            {
+                // the end effector grasp_offset short of the can centre (grasp) or of the slot (place)
+                const Eigen::Vector3d ee = p - model_->config().graspOffset * rotation.col(2);
+                const auto r = ik_.solve(ompl_ext::IkTarget::pose(ee, Eigen::Quaterniond(rotation)), particle.q, rng_,
+                                         workspace_, q, options_, &valid);
+                if (r.status == ompl_ext::IkStatus::Solved)
+                {
+                    return true;
+                }
+            }
+            return false;
+        }
+        catch (...)
+        {
+            return false;
+        }
+    }
+
+    ShelfMoveTargetSpace::ShelfMoveTargetSpace(std::shared_ptr<const ShelfMoveModel> model) : model_(std::move(model))
+    {
+        if (!model_)
+        {
+            throw Error("ShelfMoveTargetSpace: null model");
+        }
+    }
+
+    ShelfTarget ShelfMoveTargetSpace::grasp(const ShelfMoveModel::State &particle, int can) const
+    {
+        ShelfTarget t;
+        t.kind = ShelfTarget::Kind::Grasp;
+        t.can = can;
+        t.point = array3(centre(particle, can));
+        return t;
+    }
+
+    ShelfTarget ShelfMoveTargetSpace::sense(const ShelfMoveModel::State &particle, int can) const
+    {
+        ShelfTarget t = grasp(particle, can);
+        t.kind = ShelfTarget::Kind::Sense;
+        return t;
+    }
+
+    ShelfTarget ShelfMoveTargetSpace::place(int slot) const
+    {
+        ShelfTarget t;
+        t.kind = ShelfTarget::Kind::Place;
+        t.slot = slot;
+        const auto &s = model_->config().slots[static_cast<std::size_t>(slot)];
+        t.point = {{s[0], s[1], s[2] + model_->config().placeLift}};
+        return t;
+    }
+
+    std::size_t ShelfMoveTargetSpace::otherSlot(std::size_t i) const
+    {
+        return i < model_->config().reservedSlot ? i : i + 1;
+    }
+
+    ShelfTarget ShelfMoveTargetSpace::goal(const ShelfMoveModel::State &particle) const
+    {
+        const auto &c = model_->config();
+        const int target = static_cast<int>(c.targetCan);
+        if (particle.held < 0)
+        {
+            return grasp(particle, target);
+        }
+        if (particle.held == target)
+        {
+            return place(static_cast<int>(c.reservedSlot));
+        }
+        // an obstacle: the free slot (not the reserved one) nearest to the hand
+        const Eigen::Vector3d ee = model_->endEffector(particle);
+        int best = static_cast<int>(otherSlot(0));
+        double bestDistance = 1e300;
+        for (std::size_t i = 0; i + 1 < c.slots.size(); ++i)
+        {
+            const std::size_t slot = otherSlot(i);
+            ShelfMoveModel::State placed = particle;
+            for (int a = 0; a < 3; ++a)
+            {
+                placed.can[particle.held][a] = c.slots[slot][static_cast<std::size_t>(a)];
+            }
+            placed.held = -1;
+            const double d = (ee - Eigen::Vector3d(c.slots[slot][0], c.slots[slot][1], c.slots[slot][2])).norm();
+            if (model_->canPlacementValid(placed, static_cast<std::size_t>(particle.held)) && d < bestDistance)
+            {
+                best = static_cast<int>(slot);
+                bestDistance = d;
+            }
+        }
+        return place(best);
+    }
+
+    std::size_t ShelfMoveTargetSpace::numInformative(const ShelfMoveModel::State &particle) const
+    {
+        const std::size_t slots = model_->config().slots.size();
+        if (particle.held < 0)
+        {
+            return (SHELF_CANS - 1) + SHELF_CANS;
+        }
+        // holding the target: the other slots; holding another can: all slots (the goal is one of them)
+        return (particle.held == static_cast<int>(model_->config().targetCan) ? slots - 1 : slots) + SHELF_CANS;
+    }
+
+    ShelfTarget ShelfMoveTargetSpace::informative(const ShelfMoveModel::State &particle, std::size_t i) const
+    {
+        const int target = static_cast<int>(model_->config().targetCan);
+        const std::size_t n = numInformative(particle);
+        i %= n;
+        if (i >= n - SHELF_CANS)
+        {
+            return sense(particle, static_cast<int>(i - (n - SHELF_CANS)));
+        }
+        if (particle.held < 0)
+        {
+            return grasp(particle, static_cast<int>(i) < target ? static_cast<int>(i) : static_cast<int>(i) + 1);
+        }
+        return place(particle.held == target ? static_cast<int>(otherSlot(i)) : static_cast<int>(i));
+    }
+
+    double ShelfMoveTargetSpace::distance(const ShelfMoveModel::State &agent, const ShelfTarget &target) const
+    {
+        return (model_->endEffector(agent) - Eigen::Vector3d(target.point[0], target.point[1], target.point[2])).norm();
+    }
+
+    std::uint64_t ShelfMoveTargetSpace::entropyBin(const ShelfMoveModel::State &particle) const
+    {
+        const double bin = model_->config().entropyBin;
+        std::uint64_t h = mix(0x243f6a8885a308d3ULL, particle.held + 1);
+        for (std::size_t k = 0; k < SHELF_CANS; ++k)
+        {
+            if (static_cast<int>(k) == particle.held)
+            {
+                continue;
+            }
+            for (int a = 0; a < 2; ++a)
+            {
+                const double c = std::floor(particle.can[k][a] / bin);
+                h = mix(h, static_cast<std::int64_t>(std::isfinite(c) ? std::fmax(-1e15, std::fmin(1e15, c)) : 0.0));
+            }
+        }
+        return h;
+    }
+
+    ShelfMoveAdapter::ShelfMoveAdapter(std::shared_ptr<const ShelfMoveModel> model, std::unique_ptr<ShelfMoveIk> ik)
+        : model_(std::move(model)), ik_(std::move(ik))
+    {
+        if (!model_ || !ik_)
+        {
+            throw Error("ShelfMoveAdapter: null model or IK");
+        }
+    }
+
+    void ShelfMoveAdapter::configuration(const ShelfMoveModel::State &state, double *q) const
+    {
+        std::copy(state.q, state.q + ARM_DOF, q);
+    }
+
+    bool ShelfMoveAdapter::targetConfiguration(const ShelfMoveModel::State &start, const ShelfTarget &target,
+                                               double *q) const
+    {
+        scene_ = model_->makeScene(start, true);
+        sceneOf_ = start;
+        last_ = target;
+        return ik_->solve(start, target, *scene_, q);
+    }
+
+    std::shared_ptr<const ompl_ext::Environment> ShelfMoveAdapter::environment(
+        const ShelfMoveModel::State &particle) const
+    {
+        if (!scene_ || std::memcmp(&particle, &sceneOf_, sizeof(particle)) != 0)
+        {
+            scene_ = model_->makeScene(particle, true);
+            sceneOf_ = particle;
+        }
+        return scene_;
+    }
+
+    bool ShelfMoveAdapter::pathToMacroAction(const ShelfMoveModel::State &, const double *waypoints, std::size_t count,
+                                             std::vector<ShelfMoveAction> &out) const
+    {
+        points_.clear();
+        const std::size_t n = pomdp::discretizeJointPath(waypoints, count, ARM_DOF, model_->config().step, 0, points_);
+        const double *previous = waypoints;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const double *point = &points_[i * ARM_DOF];
+            ShelfMoveAction a;
+            a.waypoint = model_->config().waypointActions;
+            for (std::size_t j = 0; j < ARM_DOF; ++j)
+            {
+                a.dq[j] = a.waypoint ? point[j] : point[j] - previous[j];
+            }
+            out.push_back(a);
+            previous = point;
+        }
+        if (n > 0 && last_.kind != ShelfTarget::Kind::Sense)
+        {
+            out.back().event = last_.kind == ShelfTarget::Kind::Grasp ? GripperEvent::Close : GripperEvent::Open;
+        }
+        return n > 0;
+    }
+}  // namespace ropras::scenarios
