@@ -70,4 +70,17 @@ namespace ropras::scenarios
         const double steps = std::ceil(largest / resolution);
         return steps >= 1.0 && steps < 1e8 ? static_cast<std::size_t>(steps) : 1;
     }
+
+    void PandaArm::requireWithinLimits(const double *q, const std::string &prefix) const
+    {
+        for (std::size_t j = 0; j < ARM_DOF; ++j)
+        {
+            if (q[j] < lower(j) || q[j] > upper(j))
+            {
+                throw Error(prefix + "joint " + std::to_string(j + 1) + " = " + std::to_string(q[j]) +
+                            " is outside its limits [" + std::to_string(lower(j)) + ", " + std::to_string(upper(j)) +
+                            "]");
+            }
+        }
+    }
 }  // namespace ropras::scenarios

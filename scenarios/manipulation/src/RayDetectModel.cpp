@@ -91,15 +91,7 @@ namespace ropras::scenarios
         static_ = rayDetectStaticScene(config_, 0.0);
         nominal_ = rayDetectObstacleScene(config_, static_, 0.0);
         const auto where = [](const std::string &key) { return "scenario ray-detect: key \"" + key + "\" "; };
-        for (std::size_t j = 0; j < ARM_DOF; ++j)
-        {
-            if (config_.start[j] < arm_->lower(j) || config_.start[j] > arm_->upper(j))
-            {
-                throw Error(where("start") + "joint " + std::to_string(j + 1) + " = " +
-                            std::to_string(config_.start[j]) + " is outside its limits [" +
-                            std::to_string(arm_->lower(j)) + ", " + std::to_string(arm_->upper(j)) + "]");
-            }
-        }
+        arm_->requireWithinLimits(config_.start.data(), where("start"));
         if (!arm_->checker()->isValid(*nominal_, config_.start.data()))
         {
             throw Error(where("start") + "is in collision (with the table, the can, an obstacle or itself)");

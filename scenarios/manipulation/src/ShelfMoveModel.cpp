@@ -121,15 +121,7 @@ namespace ropras::scenarios
             prototypes_[static_cast<std::size_t>(h)] = makePrototype(shelf_, h, 0.0);
             planningPrototypes_[static_cast<std::size_t>(h)] = makePrototype(planningShelf_, h, config_.planningMargin);
         }
-        for (std::size_t j = 0; j < ARM_DOF; ++j)
-        {
-            if (config_.start[j] < arm_->lower(j) || config_.start[j] > arm_->upper(j))
-            {
-                throw Error(where("start") + "joint " + std::to_string(j + 1) + " = " +
-                            std::to_string(config_.start[j]) + " is outside its limits [" +
-                            std::to_string(arm_->lower(j)) + ", " + std::to_string(arm_->upper(j)) + "]");
-            }
-        }
+        arm_->requireWithinLimits(config_.start.data(), where("start"));
         const State s0 = trueInitialState();
         for (std::size_t k = 0; k < SHELF_CANS; ++k)
         {

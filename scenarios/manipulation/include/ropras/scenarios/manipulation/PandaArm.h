@@ -50,6 +50,10 @@ namespace ropras::scenarios
         /// clamps \a q into the joint limits
         void clamp(double *q) const noexcept;
 
+        /** \brief Throws ropras::Error "\a prefix joint J = V is outside its limits [L, U]" for the first of the
+            ARM_DOF values of \a q outside its joint's limits (a configuration key's check). */
+        void requireWithinLimits(const double *q, const std::string &prefix) const;
+
         /** \brief How many configurations a motion q0 -> q1 is checked at, excluding q0: ceil(largest joint
             change / \a resolution), at least 1 — the rule of CollisionChecker::isMotionValid, so the Bullet
             world checks the same configurations q0 + (k / n)(q1 - q0), k = 1..n. */
