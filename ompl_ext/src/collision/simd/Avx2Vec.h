@@ -152,8 +152,36 @@ namespace ropras::ompl_ext::simd
                                  _mm256_permute2f128_ps(u2, u6, 0x20), _mm256_permute2f128_ps(u3, u7, 0x20),
                                  _mm256_permute2f128_ps(u0, u4, 0x31), _mm256_permute2f128_ps(u1, u5, 0x31),
                                  _mm256_permute2f128_ps(u2, u6, 0x31), _mm256_permute2f128_ps(u3, u7, 0x31)};
-            for (int j = 0; j < dof; ++j)
-                _mm256_storeu_ps(out + 8 * j, c[j]);
+            // one store per variable, unrolled: the loop over c[] became a call to memcpy
+            switch (dof)
+            {
+                case 8:
+                    _mm256_storeu_ps(out + 56, c[7]);
+                    [[fallthrough]];
+                case 7:
+                    _mm256_storeu_ps(out + 48, c[6]);
+                    [[fallthrough]];
+                case 6:
+                    _mm256_storeu_ps(out + 40, c[5]);
+                    [[fallthrough]];
+                case 5:
+                    _mm256_storeu_ps(out + 32, c[4]);
+                    [[fallthrough]];
+                case 4:
+                    _mm256_storeu_ps(out + 24, c[3]);
+                    [[fallthrough]];
+                case 3:
+                    _mm256_storeu_ps(out + 16, c[2]);
+                    [[fallthrough]];
+                case 2:
+                    _mm256_storeu_ps(out + 8, c[1]);
+                    [[fallthrough]];
+                case 1:
+                    _mm256_storeu_ps(out, c[0]);
+                    break;
+                default:
+                    break;
+            }
             return _mm256_movemask_pd(_mm256_and_pd(ok0, ok1)) == 0xF;
         }
         friend Avx2Vec select(const Avx2Mask &m, const Avx2Vec &a, const Avx2Vec &b) noexcept

@@ -2,6 +2,7 @@
 #ifndef ROPRAS_OMPL_EXT_SIMD_BATCH_FRAMES_H
 #define ROPRAS_OMPL_EXT_SIMD_BATCH_FRAMES_H
 
+#include "ForceInline.h"
 #include "KinematicProgram.h"
 #include "Placed.h"
 #include "SinCos.h"
@@ -167,31 +168,67 @@ namespace ropras::ompl_ext::simd
                                  fma(V::load(frame + W * (3 * i + 2)), vz, V::load(frame + W * (9 + i)))));
         }
 
+        /** \brief A batch frame (12 values, WIDTH lanes each) in named registers. An array filled in a loop became a
+            call to memcpy into the stack (384 bytes per link, 12 % of the batch FK's instructions) and loads back. */
+        struct FrameRegisters
+        {
+            V r00, r01, r02, r10, r11, r12, r20, r21, r22, tx, ty, tz;
+
+            static FrameRegisters load(const float *pt) noexcept
+            {
+                constexpr int W = WIDTH;
+                return {V::load(pt),         V::load(pt + W),     V::load(pt + 2 * W),  V::load(pt + 3 * W),
+                        V::load(pt + 4 * W), V::load(pt + 5 * W), V::load(pt + 6 * W),  V::load(pt + 7 * W),
+                        V::load(pt + 8 * W), V::load(pt + 9 * W), V::load(pt + 10 * W), V::load(pt + 11 * W)};
+            }
+
+            /// the world position of the frame point (x, y, z) into \a wx, \a wy, \a wz (WIDTH floats each)
+            void place(float x, float y, float z, float *wx, float *wy, float *wz) const noexcept
+            {
+                const V vx = V::broadcast(x), vy = V::broadcast(y), vz = V::broadcast(z);
+                fma(r00, vx, fma(r01, vy, fma(r02, vz, tx))).store(wx);
+                fma(r10, vx, fma(r11, vy, fma(r12, vz, ty))).store(wy);
+                fma(r20, vx, fma(r21, vy, fma(r22, vz, tz))).store(wz);
+            }
+        };
+
         /// world centres (WIDTH lanes each) of one link's real spheres
         static void placeLinkBatch(const KinematicProgram &p, float *buf, int li) noexcept
         {
             const ScratchLayout &l = p.batch;
             constexpr int W = WIDTH;
             const LinkOp &link = p.links[static_cast<std::size_t>(li)];
-            const float *pt = buf + l.frames + 12 * W * link.frame;
-            V m[12];
-            for (int i = 0; i < 12; ++i)
-                m[i] = V::load(pt + W * i);
+            const FrameRegisters m = FrameRegisters::load(buf + l.frames + 12 * W * link.frame);
             // everything the loop reads through p in locals: vector stores may alias anything, so members read
             // in the loop would be reloaded after every store
             const float *px = p.sx.data(), *py = p.sy.data(), *pz = p.sz.data();
             float *wx = buf + l.sx, *wy = buf + l.sy, *wz = buf + l.sz;
             const int first = link.first, end = link.first + link.count;
             for (int s = first; s < end; ++s)
+                m.place(px[s], py[s], pz[s], wx + W * s, wy + W * s, wz + W * s);
+        }
+
+        /** \brief After framesBatch: the world centre and radius of every RobotModel sphere straight into \a out
+            (per sphere x, y, z, r, WIDTH lanes each, in RobotModel order), not through the scratch spheres. */
+        static void sphereCentersBatch(const KinematicProgram &p, const float *buf, float *out) noexcept
+        {
+            constexpr int W = WIDTH;
+            const float *px = p.sx.data(), *py = p.sy.data(), *pz = p.sz.data(), *pr = p.sr.data();
+            const int *sphereOfSlot = p.sphereOfSlot.data();
+            for (const LinkOp &link : p.links)
             {
-                const V vx = V::broadcast(px[s]), vy = V::broadcast(py[s]), vz = V::broadcast(pz[s]);
-                fma(m[0], vx, fma(m[1], vy, fma(m[2], vz, m[9]))).store(wx + W * s);
-                fma(m[3], vx, fma(m[4], vy, fma(m[5], vz, m[10]))).store(wy + W * s);
-                fma(m[6], vx, fma(m[7], vy, fma(m[8], vz, m[11]))).store(wz + W * s);
+                const FrameRegisters m = FrameRegisters::load(buf + p.batch.frames + 12 * W * link.frame);
+                for (int s = link.first; s < link.first + link.count; ++s)
+                {
+                    float *o = out + 4 * W * static_cast<std::size_t>(sphereOfSlot[s]);
+                    m.place(px[s], py[s], pz[s], o, o + W, o + 2 * W);
+                    V::broadcast(pr[s]).store(o + 3 * W);
+                }
             }
         }
 
-        static void ensureBatch(const KinematicProgram &p, float *buf, Placed &placed, int li) noexcept
+        ROPRAS_SIMD_FORCE_INLINE static void ensureBatch(const KinematicProgram &p, float *buf, Placed &placed,
+                                                         int li) noexcept
         {
             if (!placed.has(li))
             {

@@ -8,6 +8,7 @@
 
 #include "BatchFrames.h"
 #include "BroadPhase.h"
+#include "ForceInline.h"
 #include "KinematicProgram.h"
 #include "ObstacleTests.h"
 #include "Placed.h"
@@ -106,7 +107,8 @@ namespace ropras::ompl_ext::simd
         }
 
         /// lanes whose group box overlaps the obstacle box
-        static unsigned groupTouches(const GroupBoxes &g, int gi, const ObstacleBox &b) noexcept
+        ROPRAS_SIMD_FORCE_INLINE static unsigned groupTouches(const GroupBoxes &g, int gi,
+                                                              const ObstacleBox &b) noexcept
         {
             const Mask x =
                 cmpLe(g.lo[gi][0], V::broadcast(b.cx + b.ex)) & cmpGe(g.hi[gi][0], V::broadcast(b.cx - b.ex));
@@ -118,7 +120,7 @@ namespace ropras::ompl_ext::simd
         }
 
         /// lanes where the boxes of groups a and b overlap
-        static unsigned groupsOverlap(const GroupBoxes &g, int a, int b) noexcept
+        ROPRAS_SIMD_FORCE_INLINE static unsigned groupsOverlap(const GroupBoxes &g, int a, int b) noexcept
         {
             Mask m = cmpLe(g.lo[a][0], g.hi[b][0]) & cmpLe(g.lo[b][0], g.hi[a][0]);
             for (int i = 1; i < 3; ++i)
@@ -292,7 +294,7 @@ namespace ropras::ompl_ext::simd
             const int nGroups = static_cast<int>(p.groups.size());
             // obstacle-major: the robot box rejects far obstacles once, then the per-lane group boxes, then the
             // links of the groups that touch (only in the lanes that touch); returns true when decided (done())
-            const auto obstacle = [&](const ObstacleBox &ob, const auto &exact)
+            const auto obstacle = [&](const ObstacleBox &ob, const auto &exact) __attribute__((always_inline))
             {
                 if (!overlaps(box, ob))
                     return false;

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "ForceInline.h"
 #include "ropras/ompl_ext/scene/Environment.h"
 
 namespace ropras::ompl_ext::simd
@@ -27,8 +28,8 @@ namespace ropras::ompl_ext::simd
 
     /// lanes whose sphere (x, y, z, r) touches the box: the exact sphere-versus-axis-aligned-box test
     template <class V>
-    inline typename V::Mask sphereTouchesBox(const V &x, const V &y, const V &z, const V &r,
-                                             const ObstacleBox &b) noexcept
+    ROPRAS_SIMD_FORCE_INLINE typename V::Mask sphereTouchesBox(const V &x, const V &y, const V &z, const V &r,
+                                                               const ObstacleBox &b) noexcept
     {
         const V zero = V::zero();
         const V dx = max(abs(x - V::broadcast(b.cx)) - V::broadcast(b.ex), zero);
@@ -38,7 +39,7 @@ namespace ropras::ompl_ext::simd
     }
 
     /// true when the robot box \a a and the obstacle box \a b overlap
-    inline bool overlaps(const Aabb &a, const ObstacleBox &b) noexcept
+    ROPRAS_SIMD_FORCE_INLINE bool overlaps(const Aabb &a, const ObstacleBox &b) noexcept
     {
         return a.lo[0] <= b.cx + b.ex && a.hi[0] >= b.cx - b.ex && a.lo[1] <= b.cy + b.ey && a.hi[1] >= b.cy - b.ey &&
                a.lo[2] <= b.cz + b.ez && a.hi[2] >= b.cz - b.ez;

@@ -121,6 +121,8 @@ namespace ropras::ompl_ext::simd
         int sphereSlots{0};  ///< total padded length
         /// program index of each RobotModel sphere
         std::vector<int> programIndexOfSphere;
+        /// RobotModel sphere of each program slot, -1 in the padding
+        std::vector<int> sphereOfSlot;
         /// link bound radii padded to a multiple of WIDTH with 0
         std::vector<float> linkRadius;
         /// per link 16 floats (bx x4 | by x4 | bz x4 | 1 x4): its bound centre for the single path's two-column product

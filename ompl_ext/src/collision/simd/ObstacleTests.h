@@ -5,14 +5,15 @@
 
 #include <Eigen/Core>
 
+#include "ForceInline.h"
 #include "KinematicProgram.h"
 #include "ropras/ompl_ext/scene/Environment.h"
 
 namespace ropras::ompl_ext::simd
 {
     template <class V>
-    inline typename V::Mask boundTest(const V &x, const V &y, const V &z, const V &r, float cx, float cy, float cz,
-                                      float cr) noexcept
+    ROPRAS_SIMD_FORCE_INLINE typename V::Mask boundTest(const V &x, const V &y, const V &z, const V &r, float cx,
+                                                        float cy, float cz, float cr) noexcept
     {
         const V dx = x - V::broadcast(cx), dy = y - V::broadcast(cy), dz = z - V::broadcast(cz);
         const V rr = r + V::broadcast(cr);
@@ -20,13 +21,15 @@ namespace ropras::ompl_ext::simd
     }
 
     template <class V>
-    inline typename V::Mask hitSphere(const V &x, const V &y, const V &z, const V &r, const SphereObstacle &o) noexcept
+    ROPRAS_SIMD_FORCE_INLINE typename V::Mask hitSphere(const V &x, const V &y, const V &z, const V &r,
+                                                        const SphereObstacle &o) noexcept
     {
         return boundTest(x, y, z, r, o.x, o.y, o.z, o.r);
     }
 
     template <class V>
-    inline typename V::Mask hitBox(const V &x, const V &y, const V &z, const V &r, const BoxObstacle &o) noexcept
+    ROPRAS_SIMD_FORCE_INLINE typename V::Mask hitBox(const V &x, const V &y, const V &z, const V &r,
+                                                     const BoxObstacle &o) noexcept
     {
         const V dx = x - V::broadcast(o.cx), dy = y - V::broadcast(o.cy), dz = z - V::broadcast(o.cz);
         // p_box = R^T d; R row-major, so (R^T d)_i = sum_j rot[3j + i] d_j
@@ -41,8 +44,8 @@ namespace ropras::ompl_ext::simd
     }
 
     template <class V>
-    inline typename V::Mask hitCylinder(const V &x, const V &y, const V &z, const V &r,
-                                        const CylinderObstacle &o) noexcept
+    ROPRAS_SIMD_FORCE_INLINE typename V::Mask hitCylinder(const V &x, const V &y, const V &z, const V &r,
+                                                          const CylinderObstacle &o) noexcept
     {
         const V dx = x - V::broadcast(o.cx), dy = y - V::broadcast(o.cy), dz = z - V::broadcast(o.cz);
         const V h = fma(V::broadcast(o.ax), dx, fma(V::broadcast(o.ay), dy, V::broadcast(o.az) * dz));
@@ -54,8 +57,8 @@ namespace ropras::ompl_ext::simd
     }
 
     template <class V>
-    inline typename V::Mask hitCapsule(const V &x, const V &y, const V &z, const V &r,
-                                       const CapsuleObstacle &o) noexcept
+    ROPRAS_SIMD_FORCE_INLINE typename V::Mask hitCapsule(const V &x, const V &y, const V &z, const V &r,
+                                                         const CapsuleObstacle &o) noexcept
     {
         const V ddx = V::broadcast(o.dx), ddy = V::broadcast(o.dy), ddz = V::broadcast(o.dz);
         const V px = x - V::broadcast(o.ax), py = y - V::broadcast(o.ay), pz = z - V::broadcast(o.az);
@@ -68,25 +71,26 @@ namespace ropras::ompl_ext::simd
 
     /// the exact test for any primitive obstacle type (overloads of the functions above), for loops over all types
     template <class V>
-    inline typename V::Mask hitObstacle(const V &x, const V &y, const V &z, const V &r,
-                                        const SphereObstacle &o) noexcept
+    ROPRAS_SIMD_FORCE_INLINE typename V::Mask hitObstacle(const V &x, const V &y, const V &z, const V &r,
+                                                          const SphereObstacle &o) noexcept
     {
         return hitSphere(x, y, z, r, o);
     }
     template <class V>
-    inline typename V::Mask hitObstacle(const V &x, const V &y, const V &z, const V &r, const BoxObstacle &o) noexcept
+    ROPRAS_SIMD_FORCE_INLINE typename V::Mask hitObstacle(const V &x, const V &y, const V &z, const V &r,
+                                                          const BoxObstacle &o) noexcept
     {
         return hitBox(x, y, z, r, o);
     }
     template <class V>
-    inline typename V::Mask hitObstacle(const V &x, const V &y, const V &z, const V &r,
-                                        const CylinderObstacle &o) noexcept
+    ROPRAS_SIMD_FORCE_INLINE typename V::Mask hitObstacle(const V &x, const V &y, const V &z, const V &r,
+                                                          const CylinderObstacle &o) noexcept
     {
         return hitCylinder(x, y, z, r, o);
     }
     template <class V>
-    inline typename V::Mask hitObstacle(const V &x, const V &y, const V &z, const V &r,
-                                        const CapsuleObstacle &o) noexcept
+    ROPRAS_SIMD_FORCE_INLINE typename V::Mask hitObstacle(const V &x, const V &y, const V &z, const V &r,
+                                                          const CapsuleObstacle &o) noexcept
     {
         return hitCapsule(x, y, z, r, o);
     }

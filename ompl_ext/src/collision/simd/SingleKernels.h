@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "BroadPhase.h"
+#include "ForceInline.h"
 #include "FrameRows.h"
 #include "KinematicProgram.h"
 #include "ObstacleTests.h"
@@ -163,7 +164,7 @@ namespace ropras::ompl_ext::simd
         }
 
         /// world centres of one link's spheres (whole padded block)
-        static void placeLink(const KinematicProgram &p, float *buf, int li) noexcept
+        ROPRAS_SIMD_FORCE_INLINE static void placeLink(const KinematicProgram &p, float *buf, int li) noexcept
         {
             const ScratchLayout &l = p.single;
             const LinkOp &link = p.links[static_cast<std::size_t>(li)];
@@ -181,7 +182,8 @@ namespace ropras::ompl_ext::simd
             }
         }
 
-        static void ensure(const KinematicProgram &p, float *buf, Placed &placed, int li) noexcept
+        ROPRAS_SIMD_FORCE_INLINE static void ensure(const KinematicProgram &p, float *buf, Placed &placed,
+                                                    int li) noexcept
         {
             if (!placed.has(li))
             {
