@@ -104,10 +104,14 @@ namespace ropras::ompl_ext::simd
             const FrameOp *frames = p.frames.data();
             const LinkOp *links = p.links.data();
             const int *frameLinks = p.frameLinks.data();
-            V m[12];  // frame 0 has no parent: never read before it is set
-            for (V &v : m)
-                v = V::zero();
             const int nFrames = static_cast<int>(p.frames.size());
+            if (nFrames == 0)
+                return;
+            // frame 0 has no parent (compileProgram checks it): m starts as its offset, set again in the loop
+            // (a zero fill here was a call to memset)
+            V m[12];
+            for (int i = 0; i < 12; ++i)
+                m[i] = V::broadcast(frames[0].offset[i]);
             for (int f = 0; f < nFrames; ++f)
             {
                 const FrameOp &op = frames[f];
