@@ -12,6 +12,7 @@
 
 #include "ArmScenarioTestUtil.h"
 #include "ropras/core/Error.h"
+#include "ropras/pomdp/OmplPathPlanner.h"
 #include "ropras/pomdp/ParticleFilter.h"
 #include "ropras/scenarios/SvgRenderer.h"
 #include "ropras/scenarios/manipulation/ArmPlanning.h"
@@ -268,6 +269,30 @@ namespace ropras::scenarios
         ASSERT_TRUE(sampler.solve(out.next.q, model.config().light, model.config().lightRadius, out.next.q));
         model.finishStep(out, false, rng);
         EXPECT_TRUE(out.next.seen);
+    }
+
+    // The reference planner shares the arm's checker (building one costs far more than a plan) and plans with it;
+    // a checker of another robot object is refused, naming both robots.
+    TEST(SphereSearchTest, TheReferencePlannerSharesTheArmsChecker)
+    {
+        const auto &model = *defaultParts().model;
+        pomdp::OmplPathPlannerSettings settings;
+        settings.checker = model.arm().checker();
+        settings.timeLimit = 0.5;
+        pomdp::OmplPathPlanner planner(model.arm().robot(), model.environment(), settings);
+        EXPECT_EQ(&planner.checker(), model.arm().checker().get());
+        State start = startState(model, 0), goal = start;
+        ArmGoalSampler sampler(model.armPtr(), model.environment(), ArmGoalSampler::Settings(), 11);
+        ASSERT_TRUE(sampler.solve(start.q, model.config().light, model.config().lightRadius, goal.q));
+        ASSERT_EQ(planner.plan(start.q, goal.q), pomdp::PathPlanStatus::Solved);
+        const auto &path = planner.path();
+        for (std::size_t i = 0; i + 1 < planner.waypointCount(); ++i)
+        {
+            EXPECT_TRUE(model.arm().checker()->isMotionValid(*model.environment(), &path[i * ARM_DOF],
+                                                             &path[(i + 1) * ARM_DOF], model.config().resolution));
+        }
+        const auto copy = std::make_shared<const ompl_ext::RobotModel>(*model.arm().robot());
+        EXPECT_THROW(pomdp::OmplPathPlanner(copy, model.environment(), settings), Error);
     }
 
     TEST(SphereSearchTest, ReferenceMacrosFollowCollisionFreePathsInSteps)
