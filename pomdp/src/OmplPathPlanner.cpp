@@ -73,6 +73,7 @@ namespace ropras::pomdp
         options.backend = settings_.backend;
         options.planner = settings_.planner;
         options.plannerParams = settings_.plannerParams;
+        options.checker = settings_.checker;
         context_ = ompl_ext::makePlanningContext(robot, std::move(environment), options);
         dof_ = robot->dof();
         scratch_.resize(2 * dof_);

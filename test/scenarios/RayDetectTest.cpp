@@ -12,6 +12,7 @@
 
 #include <ompl/util/Console.h>
 
+#include "ArmScenarioTestUtil.h"
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/scene/EnvironmentQueries.h"
 #include "ropras/scenarios/manipulation/RayDetectPlanning.h"
@@ -454,24 +455,14 @@ namespace ropras::scenarios
     {
         ScenarioOptions options;
         options.overrides["horizon"] = 12;
-        const auto scenario = makeRayDetectScenario(options);
-        for (const std::string solver : {"ropras3", "rpomcp", "bplan", "pomcp", "refbasic"})
-        {
-            RunSettings settings;
-            settings.solver = solver;
-            settings.budget.simulations = 8;
-            settings.params.set("particles", 20);
-            scenario->validate(settings);
-            nlohmann::json recording;
-            const auto result = scenario->runEpisode(settings, 99, &recording, RecordSettings());
-            EXPECT_GE(result.steps, 1u) << solver;
-            EXPECT_LE(result.steps, 12u) << solver;
-            EXPECT_TRUE(std::isfinite(result.undiscountedReturn)) << solver;
-            EXPECT_EQ(recording["trajectory"].size(), result.steps + 1) << solver;
-            ASSERT_TRUE(recording.contains("rays")) << solver;
-            EXPECT_EQ(recording["rays"].size(), result.steps + 1) << solver;
-            EXPECT_EQ(recording["rays"][0]["segments"].size(), 1u) << solver;
-        }
+        test::expectEverySolverRunsAnEpisode(
+            *makeRayDetectScenario(options),
+            [](const std::string &solver, const pomdp::EpisodeResult &result, const nlohmann::json &recording)
+            {
+                ASSERT_TRUE(recording.contains("rays")) << solver;
+                EXPECT_EQ(recording["rays"].size(), result.steps + 1) << solver;
+                EXPECT_EQ(recording["rays"][0]["segments"].size(), 1u) << solver;
+            });
     }
 
     TEST(RayDetectTest, BadConfigurationValuesNameTheKey)

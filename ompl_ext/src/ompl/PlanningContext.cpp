@@ -47,7 +47,12 @@ namespace ropras::ompl_ext
             throw Error("makePlanningContext: null Environment");
         PlanningContext context;
         context.robot = robot;
-        context.checker = std::make_shared<CollisionChecker>(robot, options.backend);
+        if (options.checker && &options.checker->robot() != robot.get())
+            throw Error("makePlanningContext: the shared CollisionChecker is for robot '" +
+                        options.checker->robot().name() + "', not for the context's robot object '" + robot->name() +
+                        "'");
+        context.checker =
+            options.checker ? options.checker : std::make_shared<CollisionChecker>(robot, options.backend);
         context.setup = std::make_shared<ompl::geometric::SimpleSetup>(createStateSpace(*robot));
         const auto &si = context.setup->getSpaceInformation();
         context.validityChecker = std::make_shared<StateValidityChecker>(si, context.checker, environment);

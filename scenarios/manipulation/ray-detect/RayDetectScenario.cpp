@@ -84,6 +84,7 @@ namespace ropras::scenarios
             auto heuristic = makeSamplingHeuristic<RayDetectModel::State, RayDetectTarget>(settings, space);
             auto planner =
                 referencePlannerSettings(settings, params, config.referencePlanTime, config.resolution, seed);
+            planner.checker = arm->checker();  // built once per process (sharedPandaArm), not once per episode
             if (planner.planner == "VectorizedRRTConnect")
             {
                 planner.plannerParams["range"] = std::to_string(config.plannerRange);

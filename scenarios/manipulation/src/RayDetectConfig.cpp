@@ -4,6 +4,7 @@
 #include <string>
 
 #include "ropras/scenarios/ConfigReader.h"
+#include "ropras/scenarios/manipulation/ArmStartKeys.h"
 
 namespace ropras::scenarios
 {
@@ -114,13 +115,7 @@ namespace ropras::scenarios
                         "defaults"});
         RayDetectConfig c;
         c.json = json;
-        c.start = fixed<ARM_DOF>(r, "start");
-        const auto &ee = r.at("end_effector");
-        if (!ee.is_string() || ee.get<std::string>().empty())
-        {
-            r.fail("end_effector", "must be a link name, not " + ee.dump());
-        }
-        c.endEffector = ee.get<std::string>();
+        readArmStartKeys(r, c.start, c.endEffector);
         const ConfigReader table = r.sub("table");
         table.requireKnown({"center", "extents"});
         c.tableCenter = fixed<3>(table, "center");

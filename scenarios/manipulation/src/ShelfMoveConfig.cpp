@@ -5,6 +5,7 @@
 #include <string>
 
 #include "ropras/scenarios/ConfigReader.h"
+#include "ropras/scenarios/manipulation/ArmStartKeys.h"
 
 namespace ropras::scenarios
 {
@@ -50,14 +51,7 @@ namespace ropras::scenarios
                         "defaults"});
         ShelfMoveConfig c;
         c.json = json;
-        const auto start = r.numbers("start", ARM_DOF);
-        std::copy(start.begin(), start.end(), c.start.begin());
-        const auto &ee = r.at("end_effector");
-        if (!ee.is_string() || ee.get<std::string>().empty())
-        {
-            r.fail("end_effector", "must be a link name, not " + ee.dump());
-        }
-        c.endEffector = ee.get<std::string>();
+        readArmStartKeys(r, c.start, c.endEffector);
         for (const auto &row : r.rows("shelf", 6))
         {
             if (!(row[3] > 0.0 && row[4] > 0.0 && row[5] > 0.0))

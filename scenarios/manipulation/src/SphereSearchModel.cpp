@@ -8,6 +8,7 @@
 
 #include "ropras/core/Error.h"
 #include "ropras/scenarios/ConfigReader.h"
+#include "ropras/scenarios/manipulation/ArmStartKeys.h"
 
 namespace ropras::scenarios
 {
@@ -58,14 +59,7 @@ namespace ropras::scenarios
                         "defaults"});
         SphereSearchConfig c;
         c.json = json;
-        const auto start = r.numbers("start", ARM_DOF);
-        std::copy(start.begin(), start.end(), c.start.begin());
-        const auto &ee = r.at("end_effector");
-        if (!ee.is_string() || ee.get<std::string>().empty())
-        {
-            r.fail("end_effector", "must be a link name, not " + ee.dump());
-        }
-        c.endEffector = ee.get<std::string>();
+        readArmStartKeys(r, c.start, c.endEffector);
         const auto goals = r.rows("goals", 3);
         if (goals.size() != 2)
         {
@@ -193,7 +187,9 @@ namespace ropras::scenarios
         {
             out.observation.q[j] = out.next.q[j] + config_.observationSigma * rng.normal();
         }
-        out.observation.goal = inLight(out.next) ? out.next.goal : -1;
+        const bool lit = inLight(out.next);
+        out.next.seen = out.next.seen || lit;
+        out.observation.goal = lit ? out.next.goal : -1;
     }
 
     bool SphereSearchModel::inLight(const State &s) const noexcept
@@ -275,6 +271,10 @@ namespace ropras::scenarios
 
     void SphereSearchModel::reinvigorate(State &s, pomdp::Rng &rng) const noexcept
     {
+        if (!s.seen)
+        {
+            s.goal = rng.bernoulli(0.5) ? 1 : 0;
+        }
         if (config_.reinvigorateSigma <= 0.0)
         {
             return;

@@ -33,6 +33,9 @@ namespace ropras::pomdp
         bool shortcut{true};
         double resolution{ompl_ext::MotionValidator::DEFAULT_RESOLUTION};  ///< motion-check step (rad or m)
         ompl_ext::SimdBackend backend{ompl_ext::SimdBackend::Best};
+        /// null: the planner builds its own CollisionChecker; else it shares this one (same RobotModel), as a
+        /// scenario that already has one should: building a checker costs far more than a reference plan
+        std::shared_ptr<const ompl_ext::CollisionChecker> checker;
 
         /** \brief Reads `plan_time` (s), `plan_iterations`, `shortcut` (0/1) from \a params (other fields
             keep their values); throws ropras::Error on a non-positive time. */

@@ -24,6 +24,9 @@ namespace ropras::ompl_ext
         SimdBackend backend{SimdBackend::Best};
         std::string planner;                               ///< empty: SimpleSetup's default choice
         std::map<std::string, std::string> plannerParams;  ///< set by name on the planner
+        /// null: a new CollisionChecker for the robot (with \c backend); else this one is shared (it must be for the
+        /// same RobotModel; \c backend is then its own): building a checker costs far more than a plan
+        std::shared_ptr<const CollisionChecker> checker;
     };
 
     /** \brief Everything needed to plan for one robot in one environment: a ready SimpleSetup with the

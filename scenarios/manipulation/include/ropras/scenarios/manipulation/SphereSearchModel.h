@@ -80,6 +80,8 @@ namespace ropras::scenarios
         {
             double q[ARM_DOF]{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
             int goal{0};
+            /// the end effector has been in the light (the goal was observed) at some step of this state's history
+            bool seen{false};
         };
         using Action = ArmAction;
         struct Observation
@@ -128,7 +130,12 @@ namespace ropras::scenarios
         Action action(std::size_t i) const noexcept;
         /// None -> 0; the goal index g -> g + 1, combined with the joints binned at observation_joint_bin (> 0)
         std::uint64_t observationKey(const Observation &o) const noexcept;
-        /// jitters the joints by N(0, reinvigorate_sigma), kept only when the jittered configuration is valid
+        /** \brief Jitters the joints by N(0, reinvigorate_sigma), kept only when the jittered configuration is
+            valid; and, for a particle that has not been in the light (!seen), redraws the goal 50/50: a Gibbs move
+            from the goal's exact conditional. Before the light, neither the joints' dynamics nor any observation
+            depends on the goal, so p(goal | the particle's joints, the observations) is the prior 1/2; without
+            this move the joint likelihood's resampling fixes the goal marginal at random (genetic drift) within a
+            few steps (doc/scenario-sphere-search.md, "The belief"). */
         void reinvigorate(State &s, pomdp::Rng &rng) const noexcept;
         /** \brief heuristic_value: the discounted value of reaching the particle's goal in d steps, d = the end
             effector's distance to the goal ball / heuristic_ee_step; else 0. */
