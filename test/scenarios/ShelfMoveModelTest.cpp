@@ -6,6 +6,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "ShelfMoveTestUtil.h"
 #include "ropras/core/Error.h"
 #include "ropras/pomdp/OmplPathPlanner.h"
 #include "ropras/scenarios/ScenarioRegistry.h"
@@ -19,19 +20,17 @@ namespace ropras::scenarios
 
         nlohmann::json defaultJson()
         {
-            return nlohmann::json::parse(embeddedFile("manipulation/shelf-move/default.json"));
+            return test::shelfMoveJson();
         }
 
         std::shared_ptr<const ShelfMoveModel> makeModel(const nlohmann::json &json = defaultJson())
         {
-            const auto config = ShelfMoveConfig::fromJson(json, "shelf-move");
-            return std::make_shared<const ShelfMoveModel>(config, sharedPandaArm(config.endEffector));
+            return test::makeShelfMoveModel(json);
         }
 
         const std::shared_ptr<const ShelfMoveModel> &model()
         {
-            static const auto m = makeModel();
-            return m;
+            return test::shelfMoveModel();
         }
 
         /// a configuration for \a target in the true initial scene (or \a s), solved by the planner's IK

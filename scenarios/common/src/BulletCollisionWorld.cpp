@@ -1,21 +1,18 @@
 #include "ropras/scenarios/BulletCollisionWorld.h"
 
-#include <btBulletCollisionCommon.h>
-
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "BulletSupport.h"
 #include "ropras/core/Error.h"
 
 namespace ropras::scenarios
 {
     namespace
     {
-        btVector3 toBt(const Eigen::Vector3d &v)
-        {
-            return btVector3(static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()), static_cast<btScalar>(v.z()));
-        }
+        using bullet::toBt;
 
         bool finite(const Eigen::Vector3d &v)
         {
@@ -74,18 +71,6 @@ namespace ropras::scenarios
             btScalar margin_;
         };
 
-        btTransform toBt(const Eigen::Isometry3d &pose)
-        {
-            const Eigen::Matrix3d r = pose.rotation();
-            btTransform t;
-            t.setBasis(btMatrix3x3(
-                static_cast<btScalar>(r(0, 0)), static_cast<btScalar>(r(0, 1)), static_cast<btScalar>(r(0, 2)),
-                static_cast<btScalar>(r(1, 0)), static_cast<btScalar>(r(1, 1)), static_cast<btScalar>(r(1, 2)),
-                static_cast<btScalar>(r(2, 0)), static_cast<btScalar>(r(2, 1)), static_cast<btScalar>(r(2, 2))));
-            t.setOrigin(toBt(Eigen::Vector3d(pose.translation())));
-            return t;
-        }
-
         bool finite(const Eigen::Isometry3d &pose)
         {
             return pose.matrix().allFinite();
@@ -94,37 +79,18 @@ namespace ropras::scenarios
 
     struct BulletCollisionWorld::Impl
     {
-        explicit Impl(double margin)
-            : margin(margin), dispatcher(&configuration), world(&dispatcher, &broadphase, &configuration)
-        {
-        }
-        // No removeCollisionObject() per object: Bullet finds each one by a linear search, so tearing down n
-        // objects cost O(n^2) (100 000 obstacles: seconds). The world is declared after the objects and shapes, so
-        // it is destroyed first and releases their broadphase proxies itself; then the objects are freed.
+        explicit Impl(double m) : margin(m), world(&core.dispatcher, &core.broadphase, &core.configuration) {}
 
         btCollisionObject *addObject(std::unique_ptr<btCollisionShape> shape, const Eigen::Vector3d &position)
         {
-            auto object = std::make_unique<btCollisionObject>();
-            object->setCollisionShape(shape.get());
-            btTransform t;
-            t.setIdentity();
-            t.setOrigin(toBt(position));
-            object->setWorldTransform(t);
-            object->setContactProcessingThreshold(static_cast<btScalar>(margin));
-            object->setUserIndex(-1);
-            world.addCollisionObject(object.get());
-            shapes.push_back(std::move(shape));
-            objects.push_back(std::move(object));
-            return objects.back().get();
+            return bullet::addObject(world, storage, std::move(shape),
+                                     toBt(Eigen::Isometry3d(Eigen::Translation3d(position))), -1, margin);
         }
 
         double margin;
-        btDefaultCollisionConfiguration configuration;
-        btCollisionDispatcher dispatcher;
-        btDbvtBroadphase broadphase;
-        std::vector<std::unique_ptr<btCollisionShape>> shapes;
-        std::vector<std::unique_ptr<btCollisionObject>> objects;
-        btCollisionWorld world;  // after the objects: destroyed before them
+        bullet::CollisionCore core;
+        bullet::Storage storage;
+        btCollisionWorld world;  // after the storage: destroyed before it
         std::size_t obstacles{0};
         std::vector<btCollisionObject *> agents;
     };
@@ -200,7 +166,7 @@ namespace ropras::scenarios
             t.setIdentity();
             t.setOrigin(toBt(centre));
             compound->addChildShape(t, child.get());
-            impl_->shapes.push_back(std::move(child));
+            impl_->storage.shapes.push_back(std::move(child));
         }
         btCollisionObject *object = impl_->addObject(std::move(compound), Eigen::Vector3d::Zero());
         object->setWorldTransform(toBt(pose));

@@ -6,6 +6,7 @@
 #include "BuiltinScenarios.h"
 #include "ropras/pomdp/OmplReferencePolicy.h"
 #include "ropras/scenarios/manipulation/ShelfMovePlanning.h"
+#include "ropras/scenarios/manipulation/ShelfMoveWorld.h"
 
 namespace ropras::scenarios
 {
@@ -52,6 +53,31 @@ namespace ropras::scenarios
         }
     }  // namespace
 
+    std::string shelfMoveEvent(const ShelfMoveModel::State &s)
+    {
+        std::string name;
+        if (s.event == ShelfEvent::Grasped)
+        {
+            name = "grasp-can" + std::to_string(s.eventCan);
+        }
+        else if (s.event == ShelfEvent::Released)
+        {
+            name = "release-can" + std::to_string(s.eventCan) + "-slot" + std::to_string(s.eventSlot);
+        }
+        const std::pair<std::uint8_t, const char *> reports[] = {{SHELF_REPORT_MOVED, "moved"},
+                                                                 {SHELF_REPORT_TIPPED, "tipped"},
+                                                                 {SHELF_REPORT_PUSHED, "pushed"},
+                                                                 {SHELF_REPORT_VERDICT, "verdict-differs"}};
+        for (const auto &[bit, word] : reports)
+        {
+            if (s.worldReport & bit)
+            {
+                name += (name.empty() ? "" : "+") + std::string(word);
+            }
+        }
+        return name;
+    }
+
     ScenarioParts<ShelfMoveModel> shelfMoveParts(const ScenarioOptions &options)
     {
         const nlohmann::json defaults = nlohmann::json::parse(embeddedFile("manipulation/shelf-move/default.json"));
@@ -92,7 +118,13 @@ namespace ropras::scenarios
                 adapter, std::move(heuristic), model->arm().robot(), model->shelf(), planner);
         };
         parts.world = [model]() -> std::unique_ptr<pomdp::World<ShelfMoveModel>>
-        { return std::make_unique<pomdp::SimulatedWorld<ShelfMoveModel>>(model); };
+        {
+            if (model->config().bulletWorld)
+            {
+                return std::make_unique<ShelfMoveWorld>(model);
+            }
+            return std::make_unique<pomdp::SimulatedWorld<ShelfMoveModel>>(model);
+        };
         parts.points = [model](const ShelfMoveModel::State &s, std::vector<Point3> &out)
         {
             const Eigen::Vector3d ee = model->endEffector(s);
@@ -106,8 +138,7 @@ namespace ropras::scenarios
         parts.robotUrdf = "robots/panda/panda.urdf";
         parts.configuration = [](const ShelfMoveModel::State &s, std::vector<double> &q)
         { q.assign(s.q, s.q + ARM_DOF); };
-        parts.event = [](const ShelfMoveModel::State &s) -> std::string
-        { return s.held >= 0 ? "holding-can" + std::to_string(s.held) : std::string(); };
+        parts.event = shelfMoveEvent;
         parts.scene = shelfMoveScene(config, *model);
         return parts;
     }

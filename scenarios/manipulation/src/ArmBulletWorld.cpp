@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "BulletSupport.h"
 #include "ropras/core/Error.h"
 #include "ropras/scenarios/manipulation/PandaArm.h"
 
@@ -23,18 +24,7 @@ namespace ropras::scenarios
         /// user index of ray-only obstacles (addRayBox): no collision pairs
         constexpr int RAY_ONLY = -3;
 
-        btVector3 toBt(const Eigen::Vector3d &v)
-        {
-            return btVector3(static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()), static_cast<btScalar>(v.z()));
-        }
-
-        btTransform toBt(const Eigen::Isometry3d &pose)
-        {
-            const Eigen::Quaterniond q(pose.rotation());
-            return btTransform(btQuaternion(static_cast<btScalar>(q.x()), static_cast<btScalar>(q.y()),
-                                            static_cast<btScalar>(q.z()), static_cast<btScalar>(q.w())),
-                               toBt(pose.translation()));
-        }
+        using bullet::toBt;
 
         /// admits obstacle-arm pairs and arm-arm pairs of self-collision links
         struct PairFilter final : btOverlapFilterCallback
@@ -102,24 +92,13 @@ namespace ropras::scenarios
     struct ArmBulletWorld::Impl
     {
         Impl(std::shared_ptr<const ompl_ext::RobotModel> r, double m)
-            : robot(std::move(r)),
-              margin(m),
-              dispatcher(&configuration),
-              world(&dispatcher, &broadphase, &configuration)
+            : robot(std::move(r)), margin(m), world(&core.dispatcher, &core.broadphase, &core.configuration)
         {
         }
 
         btCollisionObject *add(std::unique_ptr<btCollisionShape> shape, const btTransform &pose, int userIndex)
         {
-            auto object = std::make_unique<btCollisionObject>();
-            object->setCollisionShape(shape.get());
-            object->setWorldTransform(pose);
-            object->setUserIndex(userIndex);
-            object->setContactProcessingThreshold(static_cast<btScalar>(margin));
-            world.addCollisionObject(object.get());
-            shapes.push_back(std::move(shape));
-            objects.push_back(std::move(object));
-            return objects.back().get();
+            return bullet::addObject(world, storage, std::move(shape), pose, userIndex, margin);
         }
 
         bool collides(const double *q)
@@ -133,10 +112,10 @@ namespace ropras::scenarios
             }
             world.updateAabbs();
             world.performDiscreteCollisionDetection();
-            const int manifolds = dispatcher.getNumManifolds();
+            const int manifolds = core.dispatcher.getNumManifolds();
             for (int m = 0; m < manifolds; ++m)
             {
-                const btPersistentManifold *manifold = dispatcher.getManifoldByIndexInternal(m);
+                const btPersistentManifold *manifold = core.dispatcher.getManifoldByIndexInternal(m);
                 for (int c = 0; c < manifold->getNumContacts(); ++c)
                 {
                     if (manifold->getContactPoint(c).getDistance() <= static_cast<btScalar>(margin))
@@ -151,13 +130,9 @@ namespace ropras::scenarios
         std::shared_ptr<const ompl_ext::RobotModel> robot;
         double margin;
         PairFilter filter;
-        btDefaultCollisionConfiguration configuration;
-        btCollisionDispatcher dispatcher;
-        btDbvtBroadphase broadphase;
-        std::vector<std::unique_ptr<btTriangleMesh>> meshes;  // the ray boxes' triangles (outlive their shapes)
-        std::vector<std::unique_ptr<btCollisionShape>> shapes;
-        std::vector<std::unique_ptr<btCollisionObject>> objects;
-        btCollisionWorld world;  // after the objects: destroyed before them (releases their proxies itself)
+        bullet::CollisionCore core;
+        bullet::Storage storage;
+        btCollisionWorld world;  // after the storage: destroyed before it (releases the proxies itself)
         std::vector<btCollisionObject *> arm;
         std::size_t obstacles{0};
     };
@@ -181,22 +156,10 @@ namespace ropras::scenarios
         impl_->world.getPairCache()->setOverlapFilterCallback(&impl_->filter);
         btTransform identity;
         identity.setIdentity();
-        const auto &spheres = impl_->robot->spheres();
-        const auto &links = impl_->robot->collisionLinks();
-        for (std::size_t l = 0; l < links.size(); ++l)
+        int link = 0;
+        for (auto &shape : bullet::armLinkShapes(*impl_->robot, impl_->storage))
         {
-            auto compound = std::make_unique<btCompoundShape>();
-            for (int i = links[l].firstSphere; i < links[l].firstSphere + links[l].sphereCount; ++i)
-            {
-                const auto &sphere = spheres[static_cast<std::size_t>(i)];
-                auto child = std::make_unique<btSphereShape>(static_cast<btScalar>(sphere.radius));
-                btTransform local;
-                local.setIdentity();
-                local.setOrigin(toBt(sphere.centerInLink));
-                compound->addChildShape(local, child.get());
-                impl_->shapes.push_back(std::move(child));
-            }
-            impl_->arm.push_back(impl_->add(std::move(compound), identity, static_cast<int>(l)));
+            impl_->arm.push_back(impl_->add(std::move(shape), identity, link++));
         }
     }
 
@@ -264,7 +227,7 @@ namespace ropras::scenarios
             }
         }
         auto shape = std::make_unique<btBvhTriangleMeshShape>(mesh.get(), true);
-        impl_->meshes.push_back(std::move(mesh));
+        impl_->storage.meshes.push_back(std::move(mesh));
         impl_->add(std::move(shape), toBt(pose), RAY_ONLY);
         return impl_->obstacles++;
     }
@@ -320,7 +283,7 @@ namespace ropras::scenarios
             *fraction = ray.m_closestHitFraction;
         }
         int index = 0;
-        for (const auto &object : impl_->objects)
+        for (const auto &object : impl_->storage.objects)
         {
             if (object.get() == ray.m_collisionObject)
             {
@@ -340,7 +303,7 @@ namespace ropras::scenarios
         ProbeContact contact;
         impl_->world.contactTest(&probe, contact);
         int index = 0;
-        for (const auto &object : impl_->objects)
+        for (const auto &object : impl_->storage.objects)
         {
             if (std::find(contact.hits.begin(), contact.hits.end(), object.get()) != contact.hits.end())
             {

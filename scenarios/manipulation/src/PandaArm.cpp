@@ -60,6 +60,24 @@ namespace ropras::scenarios
         }
     }
 
+    void PandaArm::proposeMotion(const double *q, const double *dq, bool waypoint, double sigma, pomdp::Rng &rng,
+                                 double *target) const noexcept
+    {
+        for (std::size_t j = 0; j < ARM_DOF; ++j)
+        {
+            target[j] = (waypoint ? 0.0 : q[j]) + dq[j] + sigma * rng.normal();
+        }
+        clamp(target);
+    }
+
+    void PandaArm::interpolate(const double *q0, const double *q1, double fraction, double *out) noexcept
+    {
+        for (std::size_t j = 0; j < ARM_DOF; ++j)
+        {
+            out[j] = fraction >= 1.0 ? q1[j] : q0[j] + fraction * (q1[j] - q0[j]);
+        }
+    }
+
     std::size_t PandaArm::motionSamples(const double *q0, const double *q1, double resolution) noexcept
     {
         double largest = 0.0;

@@ -156,15 +156,6 @@ namespace ropras::scenarios
         return d;
     }
 
-    void RayDetectModel::proposeMotion(const State &s, const Action &a, pomdp::Rng &rng, double *target) const noexcept
-    {
-        for (std::size_t j = 0; j < ARM_DOF; ++j)
-        {
-            target[j] = (a.waypoint ? 0.0 : s.q[j]) + a.dq[j] + config_.transitionSigma * rng.normal();
-        }
-        arm_->clamp(target);
-    }
-
     pomdp::StepResult<RayDetectModel::State, RayDetectModel::Observation> RayDetectModel::step(
         const State &s, const Action &a, pomdp::Rng &rng) const noexcept
     {
@@ -174,18 +165,9 @@ namespace ropras::scenarios
         proposeMotion(s, a, rng, target);
         double fraction = 1.0;
         const ompl_ext::Environment &env = scene(s);
-        if (arm_->checker()->isMotionValid(env, s.q, target, config_.resolution, &fraction))
-        {
-            setJoints(out.next, target);
-        }
-        else
-        {
-            // blocked: the last valid checked configuration (not terminal, no penalty)
-            for (std::size_t j = 0; j < ARM_DOF; ++j)
-            {
-                out.next.q[j] = s.q[j] + fraction * (target[j] - s.q[j]);
-            }
-        }
+        // blocked: the last valid checked configuration (not terminal, no penalty)
+        arm_->checker()->isMotionValid(env, s.q, target, config_.resolution, &fraction);
+        PandaArm::interpolate(s.q, target, fraction, out.next.q);
         finishStep(out, detect(out.next), rng);
         return out;
     }

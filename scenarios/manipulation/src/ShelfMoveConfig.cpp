@@ -9,6 +9,36 @@
 
 namespace ropras::scenarios
 {
+    namespace
+    {
+        /// the "world" keys (doc/scenario-shelf-move.md, "World")
+        void readWorld(const ConfigReader &w, ShelfMoveConfig &c)
+        {
+            w.requireKnown({"type", "can_mass", "can_friction", "can_restitution", "shelf_friction", "gravity",
+                            "push_cans", "time_step", "push_joint_speed", "settle_seconds", "settle_speed",
+                            "settle_angular_speed", "tip_angle", "report_distance"});
+            const auto &type = w.at("type");
+            if (type != "bullet" && type != "model")
+            {
+                w.fail("type", "must be \"bullet\" or \"model\", not " + type.dump());
+            }
+            c.bulletWorld = type == "bullet";
+            c.canMass = w.within("can_mass", 1e-3, 100.0);
+            c.canFriction = w.within("can_friction", 0.0, 10.0);
+            c.canRestitution = w.within("can_restitution", 0.0, 1.0);
+            c.shelfFriction = w.within("shelf_friction", 0.0, 10.0);
+            c.gravity = w.within("gravity", 0.0, 100.0);
+            c.pushCans = w.boolean("push_cans");
+            c.timeStep = w.within("time_step", 1e-4, 0.05);
+            c.pushJointSpeed = w.within("push_joint_speed", 1e-3, 10.0);
+            c.settleSeconds = w.within("settle_seconds", 0.01, 60.0);
+            c.settleSpeed = w.within("settle_speed", 1e-5, 1.0);
+            c.settleAngularSpeed = w.within("settle_angular_speed", 1e-5, 10.0);
+            c.tipAngle = w.within("tip_angle", 1e-3, 1.5);
+            c.reportDistance = w.within("report_distance", 1e-5, 0.1);
+        }
+    }  // namespace
+
     ShelfMoveConfig ShelfMoveConfig::fromJson(const nlohmann::json &json, const std::string &scenario)
     {
         const ConfigReader r(scenario, json);
@@ -48,6 +78,7 @@ namespace ropras::scenarios
                         "observation_joint_bin",
                         "entropy_bin",
                         "planning",
+                        "world",
                         "defaults"});
         ShelfMoveConfig c;
         c.json = json;
@@ -133,6 +164,7 @@ namespace ropras::scenarios
         c.ikRestarts = p.count("ik_restarts", 0, 10000);
         c.senseFraction = p.within("sense_fraction", 0.0, 1.0);
         c.placeLift = p.within("place_lift", 0.0, 0.1);
+        readWorld(r.sub("world"), c);
         const ConfigReader d = r.sub("defaults");
         for (const auto &item : r.at("defaults").items())
         {

@@ -9,6 +9,7 @@
 #include "ropras/ompl_ext/collision/CollisionChecker.h"
 #include "ropras/ompl_ext/kinematics/KinematicChain.h"
 #include "ropras/ompl_ext/model/RobotModel.h"
+#include "ropras/pomdp/Rng.h"
 
 namespace ropras::scenarios
 {
@@ -49,6 +50,15 @@ namespace ropras::scenarios
 
         /// clamps \a q into the joint limits
         void clamp(double *q) const noexcept;
+
+        /** \brief The commanded end of a primitive of the arm scenarios (their shared transition rule): \a target
+            = clamp(q + dq + N(0, sigma)) per joint, or clamp(dq + N(0, sigma)) when \a waypoint (dq is then the
+            configuration to move to). Draws ARM_DOF normals from \a rng, in joint order. */
+        void proposeMotion(const double *q, const double *dq, bool waypoint, double sigma, pomdp::Rng &rng,
+                           double *target) const noexcept;
+
+        /// \a out = q0 + fraction (q1 - q0): where a motion blocked at \a fraction stops
+        static void interpolate(const double *q0, const double *q1, double fraction, double *out) noexcept;
 
         /** \brief Throws ropras::Error "\a prefix joint J = V is outside its limits [L, U]" for the first of the
             ARM_DOF values of \a q outside its joint's limits (a configuration key's check). */

@@ -86,7 +86,10 @@ namespace ropras::scenarios
 
         // ---- shared rules (also used by RayDetectWorld and the planning side) ----
         /// the commanded motion's end: clamp(q + dq + noise)
-        void proposeMotion(const State &s, const Action &a, pomdp::Rng &rng, double *target) const noexcept;
+        void proposeMotion(const State &s, const Action &a, pomdp::Rng &rng, double *target) const noexcept
+        {
+            arm_->proposeMotion(s.q, a.dq, a.waypoint, config_.transitionSigma, rng, target);
+        }
         /** \brief The state's scene: the calling thread's overlay over the static scene with the 4 obstacles
             posed as in \a s (valid until the thread's next call). */
         const ompl_ext::Environment &scene(const State &s) const noexcept;

@@ -65,6 +65,22 @@ namespace ropras::scenarios
         std::size_t ikRestarts{8};       ///< "planning.ik_restarts": IK random restarts per target
         double senseFraction{0.7};       ///< "planning.sense_fraction": sensing points at this share of sense_distance
         double placeLift{0.005};         ///< "planning.place_lift": release this far above the slot centre
+        // "world": what really happens (ShelfMoveWorld, Bullet rigid-body dynamics) or the model as its own world
+        bool bulletWorld{true};           ///< "world.type": "bullet" (default) or "model"
+        double canMass{0.2};              ///< "world.can_mass" (kg)
+        double canFriction{0.5};          ///< "world.can_friction": Bullet friction coefficient of the cans
+        double canRestitution{0.0};       ///< "world.can_restitution"
+        double shelfFriction{0.5};        ///< "world.shelf_friction": of the boards, walls and floor
+        double gravity{9.81};             ///< "world.gravity" (m/s^2, along -z)
+        bool pushCans{false};             ///< "world.push_cans": the arm pushes cans instead of being blocked
+        double timeStep{1.0 / 240.0};     ///< "world.time_step": Bullet's fixed step (s)
+        double pushJointSpeed{0.5};       ///< "world.push_joint_speed": fastest joint while pushing (rad/s)
+        double settleSeconds{3.0};        ///< "world.settle_seconds": longest settling after a release (s)
+        double settleSpeed{0.005};        ///< "world.settle_speed": settled below this speed (m/s) ...
+        double settleAngularSpeed{0.05};  ///< "world.settle_angular_speed": ... and this one (rad/s)
+        double tipAngle{0.2};             ///< "world.tip_angle": a settled can tilted more is reported tipped (rad)
+        double reportDistance{0.002};     ///< "world.report_distance": a release that settles this far from the
+                                          ///< model's snap is reported as moved (m)
         std::map<std::string, double> defaults;  ///< "defaults": solver / filter / policy parameters
         nlohmann::json json;                     ///< the effective configuration
 

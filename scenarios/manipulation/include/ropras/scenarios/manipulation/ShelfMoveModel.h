@@ -25,6 +25,20 @@ namespace ropras::scenarios
         Open
     };
 
+    /** \brief What the gripper did in the step into a state (recorded as the episode's "events"). */
+    enum class ShelfEvent : std::uint8_t
+    {
+        None,
+        Grasped,  ///< Close grasped can eventCan
+        Released  ///< Open released can eventCan over slot eventSlot
+    };
+
+    /// ShelfMoveModel::State::worldReport bits, set by ShelfMoveWorld only (the model never sets them)
+    constexpr std::uint8_t SHELF_REPORT_MOVED = 1;    ///< the released can settled off the model's snap
+    constexpr std::uint8_t SHELF_REPORT_TIPPED = 2;   ///< the released can settled tilted (tip_angle)
+    constexpr std::uint8_t SHELF_REPORT_VERDICT = 4;  ///< the model's blocked / valid verdict differed
+    constexpr std::uint8_t SHELF_REPORT_PUSHED = 8;   ///< a can not held moved during the step (push_cans)
+
     /** \brief A Shelf-Move primitive: a joint displacement dq in R^7 (rad) or, when \c waypoint is set, the
         configuration to move to (dq holds it; action_mode = "waypoint"), and a trailing gripper event. */
     struct ShelfMoveAction
@@ -62,6 +76,11 @@ namespace ropras::scenarios
             double q[ARM_DOF]{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
             double can[SHELF_CANS][3]{};
             int held{-1};
+            /// what the step into this state did (for the recording; no rule reads it)
+            ShelfEvent event{ShelfEvent::None};
+            std::int8_t eventCan{-1};
+            std::int8_t eventSlot{-1};
+            std::uint8_t worldReport{0};  ///< SHELF_REPORT_* bits (the world's view of the step)
         };
         using Action = ShelfMoveAction;
         struct Observation
@@ -85,7 +104,8 @@ namespace ropras::scenarios
         double observationProbability(const Observation &o, const State &next, const Action &a) const noexcept;
         State sampleInitialState(pomdp::Rng &rng) const noexcept;
         double discount() const noexcept { return config_.discount; }
-        /// the goal: the target can released (not held) within place_tolerance of the reserved slot
+        /// the goal: the target can released (not held) within place_tolerance of the reserved slot, standing (its
+        /// centre within 1 cm of the slot's height: a can that tipped over in the world is not)
         bool reachedGoal(const State &s) const noexcept;
         /// POMCP / Ref-Basic / rollouts: +-step on one joint (2j: +, 2j + 1: -), 14 = close, 15 = open
         std::size_t numActions() const noexcept { return 2 * ARM_DOF + 2; }
@@ -99,7 +119,15 @@ namespace ropras::scenarios
 
         // ---- shared rules (also used by ShelfMoveWorld and the planner) ----
         /// the commanded motion's end: clamp(q + dq + N(0, transition_sigma)), or clamp(w + N(...)) for a waypoint
-        void proposeMotion(const State &s, const Action &a, pomdp::Rng &rng, double *target) const noexcept;
+        void proposeMotion(const State &s, const Action &a, pomdp::Rng &rng, double *target) const noexcept
+        {
+            arm_->proposeMotion(s.q, a.dq, a.waypoint, config_.transitionSigma, rng, target);
+        }
+        /** \brief The model's verdict on the straight motion s.q -> \a target in the scene of \a s: true when
+            valid; else \a fraction (if non-null) gets where it is blocked (the last valid checked configuration). */
+        bool motionValid(const State &s, const double *target, double *fraction) const noexcept;
+        /// the observation of \a n: joints + noise, held, the cans near the end effector + U(-w, w) (from \a rng)
+        void observe(const State &n, pomdp::Rng &rng, Observation &o) const noexcept;
         /** \brief The gripper event and everything after it, on \a out.next (joints already moved, the held
             can already following them): grasp / release, reward, goal, observation (noise from \a rng). */
         void finishStep(pomdp::StepResult<State, Observation> &out, GripperEvent event, pomdp::Rng &rng) const noexcept;
