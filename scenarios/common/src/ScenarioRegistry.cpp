@@ -86,8 +86,10 @@ namespace ropras::scenarios
                     (it->is_number() && value.is_number()) || it->type() == value.type() || it->is_null();
                 if (!sameType)
                 {
-                    throw Error(where + ": key \"" + key + "\" must be a " + std::string(it->type_name()) + ", not " +
-                                std::string(value.type_name()) + " (" + value.dump() + ")");
+                    const std::string expected = it->type_name();
+                    const bool vowel = expected.find_first_of("aeiou") == 0;
+                    throw Error(where + ": key \"" + key + "\" must be " + (vowel ? "an " : "a ") + expected +
+                                ", not " + std::string(value.type_name()) + " (" + value.dump() + ")");
                 }
                 if (value.is_number_float() && !std::isfinite(value.get<double>()))
                 {

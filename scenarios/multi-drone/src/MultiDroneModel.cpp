@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ropras/core/Error.h"
+#include "ropras/scenarios/ConfigReader.h"
 
 namespace ropras::scenarios
 {
@@ -28,41 +29,13 @@ namespace ropras::scenarios
             return "scenario " + scenario + ": key \"" + key + "\"";
         }
 
-        double number(const nlohmann::json &json, const std::string &key, const std::string &scenario)
-        {
-            const auto it = json.find(key);
-            if (it == json.end())
-            {
-                throw Error(where(scenario, key) + " is missing");
-            }
-            if (!it->is_number())
-            {
-                throw Error(where(scenario, key) + " must be a number, not " + it->dump());
-            }
-            const double value = it->get<double>();
-            if (!std::isfinite(value))
-            {
-                throw Error(where(scenario, key) + " = " + it->dump() + " is not finite");
-            }
-            return value;
-        }
-
-        std::array<double, 3> point(const nlohmann::json &value, const std::string &key, const std::string &scenario)
+        std::array<double, 3> point(const ConfigReader &r, const std::string &key, const nlohmann::json &value)
         {
             if (!value.is_array() || value.size() != 3)
             {
-                throw Error(where(scenario, key) + " must be an array of 3 numbers, not " + value.dump());
+                r.fail(key, "must be an array of 3 numbers, not " + value.dump());
             }
-            std::array<double, 3> out{};
-            for (std::size_t k = 0; k < 3; ++k)
-            {
-                if (!value[k].is_number() || !std::isfinite(value[k].get<double>()))
-                {
-                    throw Error(where(scenario, key) + " has a non-finite or non-numeric entry: " + value.dump());
-                }
-                out[k] = value[k].get<double>();
-            }
-            return out;
+            return {r.number(key, value[0]), r.number(key, value[1]), r.number(key, value[2])};
         }
 
         std::string str(const std::array<double, 3> &p)
@@ -73,54 +46,39 @@ namespace ropras::scenarios
 
     MultiDroneConfig MultiDroneConfig::fromJson(const nlohmann::json &json, const std::string &scenario)
     {
-        if (!json.is_object())
-        {
-            throw Error("scenario " + scenario + ": the configuration must be a JSON object");
-        }
-        for (const auto &item : json.items())
-        {
-            if (modelKeys().count(item.key()) == 0 && item.key() != "planning" && item.key() != "defaults")
-            {
-                throw Error(where(scenario, item.key()) + " is unknown");
-            }
-        }
+        const ConfigReader r(scenario, json);
+        auto known = modelKeys();
+        known.insert({"planning", "defaults"});
+        r.requireKnown(known);
         MultiDroneConfig c;
-        const auto bounds = json.find("bounds");
-        if (bounds == json.end() || !bounds->is_array() || bounds->size() != 2)
+        const auto &bounds = r.at("bounds");
+        if (!bounds.is_array() || bounds.size() != 2)
         {
-            throw Error(where(scenario, "bounds") + " must be [[xmin, ymin, zmin], [xmax, ymax, zmax]]" +
-                        (bounds == json.end() ? std::string(" (missing)") : ", not " + bounds->dump()));
+            r.fail("bounds", "must be [[xmin, ymin, zmin], [xmax, ymax, zmax]], not " + bounds.dump());
         }
-        c.lower = point((*bounds)[0], "bounds", scenario);
-        c.upper = point((*bounds)[1], "bounds", scenario);
-        c.droneRadius = number(json, "drone_radius", scenario);
-        c.stepSize = number(json, "step_size", scenario);
-        c.targetStep = number(json, "target_step", scenario);
-        c.detectionRange = number(json, "detection_range", scenario);
-        c.captureRadius = number(json, "capture_radius", scenario);
-        c.observationSigma = number(json, "observation_sigma", scenario);
-        c.observationBin = number(json, "observation_bin", scenario);
-        c.stepReward = number(json, "step_reward", scenario);
-        c.captureReward = number(json, "capture_reward", scenario);
-        c.discount = number(json, "discount", scenario);
-        const double horizon = number(json, "horizon", scenario);
-        if (!(horizon >= 1.0) || horizon != std::floor(horizon) || horizon > 1e7)
+        c.lower = point(r, "bounds", bounds[0]);
+        c.upper = point(r, "bounds", bounds[1]);
+        c.droneRadius = r.number("drone_radius");
+        c.stepSize = r.number("step_size");
+        c.targetStep = r.number("target_step");
+        c.detectionRange = r.number("detection_range");
+        c.captureRadius = r.number("capture_radius");
+        c.observationSigma = r.number("observation_sigma");
+        c.observationBin = r.number("observation_bin");
+        c.stepReward = r.number("step_reward");
+        c.captureReward = r.number("capture_reward");
+        c.discount = r.number("discount");
+        c.horizon = r.count("horizon", 1, 10000000);
+        c.reinvigorateSigma = r.number("reinvigorate_sigma");
+        const auto &starts = r.at("starts");
+        if (!starts.is_array() || starts.size() != MULTI_DRONE_COUNT)
         {
-            throw Error(where(scenario, "horizon") + " = " + std::to_string(horizon) +
-                        " must be a positive integer (<= 1e7)");
-        }
-        c.horizon = static_cast<std::size_t>(horizon);
-        c.reinvigorateSigma = number(json, "reinvigorate_sigma", scenario);
-        const auto starts = json.find("starts");
-        if (starts == json.end() || !starts->is_array() || starts->size() != MULTI_DRONE_COUNT)
-        {
-            throw Error(where(scenario, "starts") + " must list " + std::to_string(MULTI_DRONE_COUNT) +
-                        " drone positions [x, y, z]" +
-                        (starts == json.end() ? std::string(" (missing)") : ", not " + starts->dump()));
+            r.fail("starts", "must list " + std::to_string(MULTI_DRONE_COUNT) + " drone positions [x, y, z], not " +
+                                 starts.dump());
         }
         for (std::size_t d = 0; d < MULTI_DRONE_COUNT; ++d)
         {
-            c.starts[d] = point((*starts)[d], "starts", scenario);
+            c.starts[d] = point(r, "starts", starts[d]);
         }
         c.validate(scenario);
         return c;
