@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "ropras/core/Error.h"
 #include "ropras/scenarios/ConfigReader.h"
@@ -29,13 +30,9 @@ namespace ropras::scenarios
             return "scenario " + scenario + ": key \"" + key + "\"";
         }
 
-        std::array<double, 3> point(const ConfigReader &r, const std::string &key, const nlohmann::json &value)
+        std::array<double, 3> point(const std::vector<double> &row)
         {
-            if (!value.is_array() || value.size() != 3)
-            {
-                r.fail(key, "must be an array of 3 numbers, not " + value.dump());
-            }
-            return {r.number(key, value[0]), r.number(key, value[1]), r.number(key, value[2])};
+            return {row[0], row[1], row[2]};
         }
 
         std::string str(const std::array<double, 3> &p)
@@ -51,13 +48,13 @@ namespace ropras::scenarios
         known.insert({"planning", "defaults"});
         r.requireKnown(known);
         MultiDroneConfig c;
-        const auto &bounds = r.at("bounds");
-        if (!bounds.is_array() || bounds.size() != 2)
+        const auto bounds = r.rows("bounds", 3);
+        if (bounds.size() != 2)
         {
-            r.fail("bounds", "must be [[xmin, ymin, zmin], [xmax, ymax, zmax]], not " + bounds.dump());
+            r.fail("bounds", "must be [[xmin, ymin, zmin], [xmax, ymax, zmax]], not " + r.at("bounds").dump());
         }
-        c.lower = point(r, "bounds", bounds[0]);
-        c.upper = point(r, "bounds", bounds[1]);
+        c.lower = point(bounds[0]);
+        c.upper = point(bounds[1]);
         c.droneRadius = r.number("drone_radius");
         c.stepSize = r.number("step_size");
         c.targetStep = r.number("target_step");
@@ -70,15 +67,15 @@ namespace ropras::scenarios
         c.discount = r.number("discount");
         c.horizon = r.count("horizon", 1, 10000000);
         c.reinvigorateSigma = r.number("reinvigorate_sigma");
-        const auto &starts = r.at("starts");
-        if (!starts.is_array() || starts.size() != MULTI_DRONE_COUNT)
+        const auto starts = r.rows("starts", 3);
+        if (starts.size() != MULTI_DRONE_COUNT)
         {
             r.fail("starts", "must list " + std::to_string(MULTI_DRONE_COUNT) + " drone positions [x, y, z], not " +
-                                 starts.dump());
+                                 r.at("starts").dump());
         }
         for (std::size_t d = 0; d < MULTI_DRONE_COUNT; ++d)
         {
-            c.starts[d] = point(r, "starts", starts[d]);
+            c.starts[d] = point(starts[d]);
         }
         c.validate(scenario);
         return c;
