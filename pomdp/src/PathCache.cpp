@@ -15,6 +15,9 @@ namespace ropras::pomdp
             throw Error("PathCache: reuse radius (path_reuse) " + std::to_string(radius) + " must be finite and >= 0");
         if (pathsPerTarget == 0 || maxTargets == 0)
             throw Error("PathCache: paths per target (path_reuse_paths) and targets kept must be >= 1");
+        if (prefixSteps > 0 && !(prefixStep > 0.0 && std::isfinite(prefixStep)))
+            throw Error("PathCache: the prefix step " + std::to_string(prefixStep) +
+                        " must be finite and > 0 when a prefix of " + std::to_string(prefixSteps) + " steps is set");
     }
 
     PathCache::PathCache(std::size_t dof, const Settings &settings) : dof_(dof), settings_(settings)
@@ -66,6 +69,30 @@ namespace ropras::pomdp
         return bestD2;
     }
 
+    std::size_t PathCache::prefixWaypoints(const double *path, std::size_t count) const noexcept
+    {
+        if (settings_.prefixSteps == 0)
+            return count;
+        std::size_t pieces = 0;
+        for (std::size_t s = 0; s + 1 < count; ++s)
+        {
+            double length2 = 0.0;
+            for (std::size_t j = 0; j < dof_; ++j)
+            {
+                const double d = path[(s + 1) * dof_ + j] - path[s * dof_ + j];
+                length2 += d * d;
+            }
+            if (length2 == 0.0)
+                continue;
+            // discretizeJointPath's equal split: ceil(length / step) pieces (a remainder below 1e-9 is rounding)
+            pieces +=
+                static_cast<std::size_t>(std::max(1.0, std::ceil(std::sqrt(length2) / settings_.prefixStep - 1e-9)));
+            if (pieces >= settings_.prefixSteps)
+                return s + 2;
+        }
+        return count;
+    }
+
     bool PathCache::find(const ompl_ext::CollisionChecker &checker, const ompl_ext::Environment &environment,
                          double resolution, const double *start, const double *target, Rng &rng,
                          std::vector<double> &out) noexcept
@@ -103,7 +130,9 @@ namespace ropras::pomdp
             }
             joined.insert(joined.end(), best->begin() + static_cast<std::ptrdiff_t>((bestSegment + 1) * dof_),
                           best->end());
-            const std::size_t n = joined.size() / dof_;
+            const std::size_t whole = joined.size() / dof_;
+            const std::size_t n = prefixWaypoints(joined.data(), whole);
+            joined.resize(n * dof_);
             for (std::size_t i = 0; i + 1 < n; ++i)
             {
                 if (!checker.isMotionValid(environment, &joined[i * dof_], &joined[(i + 1) * dof_], resolution))
@@ -114,6 +143,8 @@ namespace ropras::pomdp
             }
             out.swap(joined);
             ++statistics_.hits;
+            if (n < whole)
+                ++statistics_.truncated;
             return true;
         }
         catch (...)

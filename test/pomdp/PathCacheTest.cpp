@@ -118,6 +118,55 @@ namespace ropras::pomdp::test
         EXPECT_TRUE(cache.find(checker, empty, POINT_RESOLUTION, START, GOAL, rng, out));
     }
 
+    // With a prefix (the caller cuts at most prefixSteps points of prefixStep), a kept path that collides only beyond
+    // the cut is continued: only the segments the cut reads are checked and returned, and the macro-action cut from
+    // them equals the one cut from the whole path; a collision inside the cut still rejects it.
+    TEST(PathCache, APrefixIsCheckedAndReturnedOnlyAsFarAsTheCallersCut)
+    {
+        const ompl_ext::CollisionChecker checker(pointRobot());
+        const auto env = pointEnvironment();
+        // free up to x = 0.35, then straight through the wall at x = 0.5
+        const std::vector<double> kept = {START[0], START[1], 0.30, 0.5, 0.35, 0.5, GOAL[0], GOAL[1]};
+        ASSERT_FALSE(checker.isMotionValid(*env, &kept[4], GOAL, POINT_RESOLUTION));
+        const double near[2] = {START[0] + 0.01, START[1] + 0.01};
+        const auto cacheWith = [&](std::size_t steps)
+        {
+            PathCache::Settings settings;
+            settings.radius = 0.05;
+            settings.pathsPerTarget = 1;
+            settings.prefixStep = 0.05;
+            settings.prefixSteps = steps;
+            auto cache = std::make_unique<PathCache>(2, settings);
+            cache->store(GOAL, kept.data(), kept.size() / 2);
+            return cache;
+        };
+        Rng rng(6);
+        std::vector<double> whole, out;
+        ompl_ext::Environment empty;
+        ASSERT_TRUE(cacheWith(0)->find(checker, empty, POINT_RESOLUTION, near, GOAL, rng, whole));
+        ASSERT_EQ(whole.size(), 10u) << "near, its foot on the first segment, then the rest of the kept path";
+        EXPECT_FALSE(cacheWith(0)->find(checker, *env, POINT_RESOLUTION, near, GOAL, rng, out)) << "whole path checked";
+
+        // near -> foot (1 piece), foot -> (0.30, 0.5) (3 pieces): a cut of 4 steps reads 3 waypoints
+        auto cache = cacheWith(4);
+        ASSERT_TRUE(cache->find(checker, *env, POINT_RESOLUTION, near, GOAL, rng, out));
+        ASSERT_EQ(out.size(), 6u);
+        EXPECT_EQ(std::vector<double>(out.begin(), out.end()), std::vector<double>(whole.begin(), whole.begin() + 6));
+        EXPECT_EQ(cache->statistics().truncated, 1u);
+        EXPECT_TRUE(everySegmentValid(checker, out));
+        std::vector<double> fromPrefix, fromWhole;
+        ASSERT_EQ(discretizeJointPath(out.data(), out.size() / 2, 2, 0.05, 4, fromPrefix), 4u);
+        ASSERT_EQ(discretizeJointPath(whole.data(), whole.size() / 2, 2, 0.05, 4, fromWhole), 4u);
+        EXPECT_EQ(fromPrefix, fromWhole);
+
+        // a cut of 60 steps reaches the wall: rejected
+        EXPECT_FALSE(cacheWith(60)->find(checker, *env, POINT_RESOLUTION, near, GOAL, rng, out));
+        PathCache::Settings bad;
+        bad.radius = 0.1;
+        bad.prefixSteps = 3;  // without a step
+        EXPECT_THROW(PathCache(2, bad), Error);
+    }
+
     TEST(PathCache, BadSettingsThrow)
     {
         PathCache::Settings settings;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "ShelfMoveTestUtil.h"
 #include "ropras/core/Error.h"
@@ -288,6 +289,57 @@ namespace ropras::scenarios
                 EXPECT_EQ(cur.can[k][a], s0.can[k][a]);  // no pushing in the model
             }
         }
+    }
+
+    // Near a grasp deep in the shelf, noise puts the arm inside the planning margin: valid in the true scene, invalid
+    // in the grown one. The adapter then plans in the true scene (in which the start is valid) instead of failing every
+    // plan as an invalid start; a start invalid in both keeps the planning scene (the planner reports it).
+    TEST(ShelfMoveModel, ParticlesInsideThePlanningMarginPlanInTheirTrueScene)
+    {
+        const auto &m = *model();
+        const ShelfMoveTargetSpace space(model());
+        const State s0 = m.trueInitialState();
+        double grasp[ARM_DOF];
+        ASSERT_TRUE(solveTarget(s0, space.grasp(s0, 1), grasp));
+        ShelfMoveAdapter adapter(model(), std::make_unique<ShelfMoveIk>(model(), 30, 3));
+        const auto &checker = *m.arm().checker();
+        pomdp::Rng rng(12);
+        int inside = 0, clear = 0, invalid = 0;
+        std::vector<double> marginal;  // a configuration inside the margin: the grown scene rejects it
+        for (int attempt = 0; attempt < 4000 && (inside < 5 || clear < 5); ++attempt)
+        {
+            State s = s0;
+            for (std::size_t j = 0; j < ARM_DOF; ++j)
+                s.q[j] = grasp[j] + rng.normal(0.0, 0.03);
+            m.arm().clamp(s.q);
+            const bool trueValid = checker.isValid(*m.makeScene(s, false), s.q);
+            const bool grownValid = checker.isValid(*m.makeScene(s, true), s.q);
+            const auto env = adapter.environment(s);
+            ASSERT_NE(env, nullptr);
+            if (trueValid && !grownValid)
+            {
+                ++inside;
+                EXPECT_TRUE(checker.isValid(*env, s.q)) << "planned for in the true scene";
+                marginal.assign(s.q, s.q + ARM_DOF);
+            }
+            else if (grownValid)
+            {
+                EXPECT_TRUE(checker.isValid(*env, s.q));
+                if (!marginal.empty())
+                {
+                    ++clear;
+                    EXPECT_FALSE(checker.isValid(*env, marginal.data())) << "a clear start plans in the grown scene";
+                }
+            }
+            else
+            {
+                ++invalid;
+                EXPECT_FALSE(checker.isValid(*env, s.q)) << "an invalid start stays invalid";
+            }
+        }
+        EXPECT_GE(inside, 5) << "configurations inside the margin near the grasp were found (" << clear << " clear, "
+                             << invalid << " in collision)";
+        EXPECT_GE(clear, 5);
     }
 
     TEST(ShelfMoveModel, ObservationsDetectNearCansOnlyAndTheirLikelihoodIsTheSoftenedBox)

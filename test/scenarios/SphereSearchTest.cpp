@@ -206,6 +206,54 @@ namespace ropras::scenarios
         EXPECT_DOUBLE_EQ(out.reward, config.stepReward + config.failReward);
     }
 
+    // A full pool of IK solutions answers with the one nearest to the particle's configuration (planning.ik_choice
+    // "nearest"): checked against every pooled solution from random seeds; "uniform" answers with others too.
+    TEST(SphereSearchTest, AFullIkPoolAnswersWithTheSolutionNearestToTheParticle)
+    {
+        const auto &model = *defaultParts().model;
+        const auto &config = model.config();
+        const auto env = sphereSearchEnvironment(config, 0.0);
+        for (const bool nearest : {true, false})
+        {
+            ArmGoalSampler::Settings settings;
+            settings.nearest = nearest;
+            ArmGoalSampler sampler(model.armPtr(), env, settings, 21);
+            const State start = startState(model, 2);
+            double q[ARM_DOF];
+            for (std::size_t i = 0; i < 200 && sampler.pooled(config.light).size() < settings.poolSize; ++i)
+                ASSERT_TRUE(sampler.solve(start.q, config.light, config.lightRadius, q));
+            const auto pool = sampler.pooled(config.light);
+            ASSERT_EQ(pool.size(), settings.poolSize);
+            core::Rng rng(5);
+            std::size_t notNearest = 0;
+            for (int trial = 0; trial < 50; ++trial)
+            {
+                double seed[ARM_DOF];
+                for (std::size_t j = 0; j < ARM_DOF; ++j)
+                    seed[j] = rng.uniform(model.arm().lower(j), model.arm().upper(j));
+                ASSERT_TRUE(sampler.solve(seed, config.light, config.lightRadius, q));
+                std::vector<double> d2(pool.size(), 0.0);
+                std::size_t answered = pool.size();
+                for (std::size_t k = 0; k < pool.size(); ++k)
+                {
+                    for (std::size_t j = 0; j < ARM_DOF; ++j)
+                        d2[k] += (pool[k][j] - seed[j]) * (pool[k][j] - seed[j]);
+                    if (std::equal(q, q + ARM_DOF, pool[k].begin()))
+                        answered = k;
+                }
+                ASSERT_LT(answered, pool.size()) << "the answer is one of the pooled solutions";
+                const double best = *std::min_element(d2.begin(), d2.end());
+                if (d2[answered] > best)
+                    ++notNearest;
+            }
+            if (nearest)
+                EXPECT_EQ(notNearest, 0u);
+            else
+                EXPECT_GT(notNearest, 10u);
+            EXPECT_EQ(sampler.pooled(config.goals[0]).size(), 0u) << "another ball has its own pool";
+        }
+    }
+
     // The goal marginal of the execution filter: before the light no observation depends on the goal, so it must
     // stay near 1/2; resampling on the sharp joint likelihood alone fixes it at random within a few steps (the cause of
     // the wrong-goal failures), the Gibbs move of reinvigorate() keeps it; a particle that has seen the light keeps
@@ -480,6 +528,8 @@ namespace ropras::scenarios
         expectError({{"end_effector", "panda_nose"}}, "panda_nose");
         expectError({{"transition_sigma", -0.02}}, "\"transition_sigma\"");
         expectError({{"action_mode", "teleport"}}, "\"action_mode\"");
+        expectError({{"planning", {{"ik_choice", "closest"}}}},
+                    "\"planning.ik_choice\" must be \"nearest\" or \"uniform\"");
         expectError({{"color", 1}}, "color");  // unknown key
     }
 }  // namespace ropras::scenarios

@@ -123,6 +123,19 @@ namespace ropras::scenarios
         return value.get<bool>();
     }
 
+    std::string ConfigReader::choice(const std::string &key, const std::vector<std::string> &choices) const
+    {
+        const auto &value = at(key);
+        std::string listed;
+        for (const auto &c : choices)
+        {
+            if (value.is_string() && value.get<std::string>() == c)
+                return c;
+            listed += (listed.empty() ? "\"" : (&c == &choices.back() ? " or \"" : ", \"")) + c + "\"";
+        }
+        fail(key, "must be " + listed + ", not " + value.dump());
+    }
+
     std::vector<double> ConfigReader::numbersOf(const std::string &key, const nlohmann::json &value,
                                                 std::size_t n) const
     {

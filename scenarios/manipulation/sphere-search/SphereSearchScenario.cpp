@@ -88,6 +88,7 @@ namespace ropras::scenarios
             ik.restarts = config.ikRestarts;
             ik.points = config.ikPoints;
             ik.radiusFraction = config.ikRadiusFraction;
+            ik.nearest = config.ikNearest;
             auto sampler = std::make_unique<ArmGoalSampler>(arm, planningEnv, ik, seed ^ 0x5bd1e995ULL);
             const std::size_t macroLength = params.getCount("macro_length", 10);
             auto adapter = std::make_shared<const ArmPlanningAdapter>(std::move(sampler), config.step, macroLength,
@@ -98,6 +99,13 @@ namespace ropras::scenarios
             pomdp::PathCache::Settings reuse;
             reuse.radius = params.get("path_reuse", 0.0);
             reuse.pathsPerTarget = params.getCount("path_reuse_paths", reuse.pathsPerTarget);
+            // PathToMacroAction reads at most macro_length steps of `step`: only that prefix of a kept path is
+            // re-checked in the particle's world (path_reuse_prefix=0 re-checks the whole path)
+            if (params.get("path_reuse_prefix", 1.0) != 0.0)
+            {
+                reuse.prefixStep = config.step;
+                reuse.prefixSteps = macroLength;
+            }
             policy->setPathCache(reuse);
             return policy;
         };

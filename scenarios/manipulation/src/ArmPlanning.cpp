@@ -1,6 +1,7 @@
 #include "ropras/scenarios/manipulation/ArmPlanning.h"
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -29,6 +30,43 @@ namespace ropras::scenarios
         valid_ = ompl_ext::collisionFreePredicate(*arm_->checker(), *environment_);
     }
 
+    std::vector<std::array<double, ARM_DOF>> ArmGoalSampler::pooled(const std::array<double, 3> &center) const
+    {
+        for (const auto &p : pools_)
+        {
+            if (p.center == center)
+            {
+                return p.solutions;
+            }
+        }
+        return {};
+    }
+
+    std::size_t ArmGoalSampler::pick(const Pool &pool, const double *seed) noexcept
+    {
+        if (!settings_.nearest)
+        {
+            return rng_.uniformIndex(pool.solutions.size());
+        }
+        std::size_t best = 0;
+        double bestD2 = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k < pool.solutions.size(); ++k)
+        {
+            double d2 = 0.0;
+            for (std::size_t j = 0; j < ARM_DOF; ++j)
+            {
+                const double d = pool.solutions[k][j] - seed[j];
+                d2 += d * d;
+            }
+            if (d2 < bestD2)
+            {
+                bestD2 = d2;
+                best = k;
+            }
+        }
+        return best;
+    }
+
     bool ArmGoalSampler::solve(const double *seed, const std::array<double, 3> &center, double radius,
                                double *q) noexcept
     {
@@ -47,7 +85,7 @@ namespace ropras::scenarios
         }
         if (pool->solutions.size() >= settings_.poolSize)
         {
-            const auto &chosen = pool->solutions[rng_.uniformIndex(pool->solutions.size())];
+            const auto &chosen = pool->solutions[pick(*pool, seed)];
             std::copy(chosen.begin(), chosen.end(), q);
             return true;
         }
@@ -74,7 +112,7 @@ namespace ropras::scenarios
         }
         if (!pool->solutions.empty())
         {
-            const auto &chosen = pool->solutions[rng_.uniformIndex(pool->solutions.size())];
+            const auto &chosen = pool->solutions[pick(*pool, seed)];
             std::copy(chosen.begin(), chosen.end(), q);
             return true;
         }

@@ -130,11 +130,7 @@ namespace ropras::scenarios
         c.goalRadius = r.within("goal_radius", 1e-4, 1.0);
         c.rayLength = r.within("ray_length", 1e-3, 10.0);
         c.step = r.within("step", 1e-4, 2.0 * PI);
-        const auto &mode = r.at("action_mode");
-        if (mode != "delta" && mode != "waypoint")
-        {
-            r.fail("action_mode", "must be \"delta\" or \"waypoint\", not " + mode.dump());
-        }
+        const std::string mode = r.choice("action_mode", {"delta", "waypoint"});
         c.waypointActions = mode == "waypoint";
         c.transitionSigma = r.within("transition_sigma", 0.0, 1.0);
         c.observationSigma = r.within("observation_sigma", 1e-6, 1.0);

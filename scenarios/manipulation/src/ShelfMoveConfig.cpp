@@ -17,11 +17,7 @@ namespace ropras::scenarios
             w.requireKnown({"type", "can_mass", "can_friction", "can_restitution", "shelf_friction", "gravity",
                             "push_cans", "time_step", "push_joint_speed", "settle_seconds", "settle_speed",
                             "settle_angular_speed", "tip_angle", "report_distance"});
-            const auto &type = w.at("type");
-            if (type != "bullet" && type != "model")
-            {
-                w.fail("type", "must be \"bullet\" or \"model\", not " + type.dump());
-            }
+            const std::string type = w.choice("type", {"bullet", "model"});
             c.bulletWorld = type == "bullet";
             c.canMass = w.within("can_mass", 1e-3, 100.0);
             c.canFriction = w.within("can_friction", 0.0, 10.0);
@@ -133,11 +129,7 @@ namespace ropras::scenarios
         c.canObservationNoise = r.within("can_observation_noise", 1e-4, 1.0);
         c.observationSoftening = r.within("observation_softening", 1e-5, 1.0);
         c.step = r.within("step", 1e-4, 1.0);
-        const auto &mode = r.at("action_mode");
-        if (mode != "delta" && mode != "waypoint")
-        {
-            r.fail("action_mode", "must be \"delta\" or \"waypoint\", not " + mode.dump());
-        }
+        const std::string mode = r.choice("action_mode", {"delta", "waypoint"});
         c.waypointActions = mode == "waypoint";
         c.transitionSigma = r.within("transition_sigma", 0.0, 1.0);
         c.observationSigma = r.within("observation_sigma", 1e-5, 1.0);

@@ -253,6 +253,7 @@ namespace ropras::scenarios
     {
         scene_ = model_->makeScene(start, true);
         sceneOf_ = start;
+        trueScene_ = nullptr;
         last_ = target;
         return ik_->solve(start, target, *scene_, q);
     }
@@ -264,6 +265,21 @@ namespace ropras::scenarios
         {
             scene_ = model_->makeScene(particle, true);
             sceneOf_ = particle;
+            trueScene_ = nullptr;
+        }
+        if (trueScene_)
+        {
+            return trueScene_;
+        }
+        const auto &checker = *model_->arm().checker();
+        if (!checker.isValid(*scene_, particle.q))
+        {
+            auto truth = model_->makeScene(particle, false);
+            if (checker.isValid(*truth, particle.q))
+            {
+                trueScene_ = std::move(truth);
+                return trueScene_;
+            }
         }
         return scene_;
     }

@@ -78,11 +78,7 @@ namespace ropras::scenarios
             c.obstacles.push_back({{row[0], row[1], row[2], row[3]}});
         }
         c.step = r.positive("step");
-        const auto &mode = r.at("action_mode");
-        if (mode != "delta" && mode != "waypoint")
-        {
-            r.fail("action_mode", "must be \"delta\" or \"waypoint\", not " + mode.dump());
-        }
+        const std::string mode = r.choice("action_mode", {"delta", "waypoint"});
         c.waypointActions = mode == "waypoint";
         c.transitionSigma = r.nonNegative("transition_sigma");
         c.observationSigma = r.positive("observation_sigma");
@@ -100,7 +96,7 @@ namespace ropras::scenarios
         c.heuristicEndEffectorStep = r.positive("heuristic_ee_step");
         const ConfigReader p = r.sub("planning");
         p.requireKnown({"plan_seconds", "reference_plan_time", "margin", "planner_range", "ik_restarts", "ik_points",
-                        "ik_radius_fraction"});
+                        "ik_radius_fraction", "ik_choice"});
         c.planSeconds = p.positive("plan_seconds");
         c.referencePlanTime = p.positive("reference_plan_time");
         c.planningMargin = p.nonNegative("margin");
@@ -108,6 +104,7 @@ namespace ropras::scenarios
         c.ikRestarts = p.count("ik_restarts", 0, 10000);
         c.ikPoints = p.count("ik_points", 1, 1000);
         c.ikRadiusFraction = p.within("ik_radius_fraction", 0.0, 1.0);
+        c.ikNearest = p.choice("ik_choice", {"nearest", "uniform"}) == "nearest";
         const ConfigReader d = r.sub("defaults");
         for (const auto &item : r.at("defaults").items())
         {

@@ -37,6 +37,8 @@ namespace ropras::scenarios
         /// an integer in [lo, hi]
         std::size_t count(const std::string &key, std::size_t lo, std::size_t hi) const;
         bool boolean(const std::string &key) const;
+        /// one of the strings \a choices (the message lists them)
+        std::string choice(const std::string &key, const std::vector<std::string> &choices) const;
         /// an array of exactly \a n finite numbers (n = 0: any length >= 1)
         std::vector<double> numbers(const std::string &key, std::size_t n) const;
         /// an array of arrays of \a n finite numbers each (may be empty)

@@ -35,9 +35,12 @@ namespace ropras::scenarios
     /** \brief Goal configurations for workspace balls: inverse kinematics (position of the end effector,
         damped least squares with seeded random restarts) for points drawn uniformly within
         \a radiusFraction of the ball's radius, collision-free in a given environment. Successful solutions
-        are kept per ball (up to \a poolSize): once the pool is full, a query returns one of them at random
-        (the environment of the arm scenarios' planner is static, so a solution stays valid). Not
-        thread-safe (one per reference policy). */
+        are kept per ball (up to \a poolSize): once the pool is full, a query returns the one nearest (joint-space
+        L2) to the query's seed, the particle's configuration (\a nearest, the default), or one at random (the
+        environment of the arm scenarios' planner is static, so a solution stays valid). Nearest: the reference
+        plan then goes to the arm's own IK branch, a short motion, instead of to a far one that often needs the
+        whole per-plan time limit (doc/scenario-sphere-search.md, "Target configurations"). Not thread-safe (one
+        per reference policy). */
     class ArmGoalSampler
     {
     public:
@@ -47,6 +50,7 @@ namespace ropras::scenarios
             std::size_t points{4};       ///< points tried per query
             double radiusFraction{0.6};  ///< points within this share of the ball's radius of its centre
             std::size_t poolSize{8};     ///< solutions kept per ball
+            bool nearest{true};          ///< a full pool answers with its solution nearest to the seed, else at random
         };
 
         ArmGoalSampler(std::shared_ptr<const PandaArm> arm, std::shared_ptr<const ompl_ext::Environment> environment,
@@ -55,6 +59,9 @@ namespace ropras::scenarios
         /** \brief A collision-free configuration whose end effector is in the ball (\a center, \a radius), the
             first IK attempt seeded with \a seed; false when none was found. noexcept (IK outcomes are values). */
         bool solve(const double *seed, const std::array<double, 3> &center, double radius, double *q) noexcept;
+
+        /// the solutions pooled for the ball centred at \a center (empty when none)
+        std::vector<std::array<double, ARM_DOF>> pooled(const std::array<double, 3> &center) const;
 
         /// IK solves run so far (for statistics and tests)
         std::size_t solves() const { return solves_; }
@@ -65,6 +72,9 @@ namespace ropras::scenarios
             std::array<double, 3> center;
             std::vector<std::array<double, ARM_DOF>> solutions;
         };
+
+        /// the pooled solution answered for \a seed (Settings::nearest)
+        std::size_t pick(const Pool &pool, const double *seed) noexcept;
 
         std::shared_ptr<const PandaArm> arm_;
         std::shared_ptr<const ompl_ext::Environment> environment_;

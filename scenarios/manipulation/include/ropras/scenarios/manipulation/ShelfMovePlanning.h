@@ -91,7 +91,9 @@ namespace ropras::scenarios
     /** \brief The OMPL planning adapter of Shelf-Move: the configuration is the joints; a target's
         configuration comes from ShelfMoveIk in the particle's planning scene (the shelf grown by
         planning.margin, the particle's cans, the held can attached), which is also the scene the planner
-        plans in; PathToMacroAction "entire motion path": the whole path cut into steps of L2 norm <= step,
+        plans in, except for a particle whose arm lies inside the margin (valid in its true scene, invalid in the
+        grown one, as after a grasp deep in the shelf): it is planned for in its true scene instead of failing as
+        an invalid start; PathToMacroAction "entire motion path": the whole path cut into steps of L2 norm <= step,
         as joint displacements, the last one carrying Close (grasp targets) or Open (place targets). The IK
         and the last target are mutable: one adapter per reference policy (one thread). */
     class ShelfMoveAdapter final
@@ -113,6 +115,7 @@ namespace ropras::scenarios
         mutable ShelfTarget last_{};
         mutable std::shared_ptr<ompl_ext::Environment> scene_;
         mutable ShelfMoveModel::State sceneOf_{};
+        mutable std::shared_ptr<const ompl_ext::Environment> trueScene_;  ///< of sceneOf_, when planned in it
         mutable std::vector<double> points_;
     };
 }  // namespace ropras::scenarios

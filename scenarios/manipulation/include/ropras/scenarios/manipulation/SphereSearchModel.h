@@ -53,6 +53,7 @@ namespace ropras::scenarios
         std::size_t ikRestarts{10};      ///< "planning.ik_restarts": per IK target point
         std::size_t ikPoints{4};         ///< "planning.ik_points": target points tried per goal configuration
         double ikRadiusFraction{0.6};    ///< "planning.ik_radius_fraction": points within this share of a radius
+        bool ikNearest{true};  ///< "planning.ik_choice": "nearest" pooled IK solution to the particle, or "uniform"
         std::map<std::string, double> defaults;  ///< "defaults": solver / filter / policy parameters
         nlohmann::json json;                     ///< the effective configuration
 
