@@ -3,7 +3,8 @@
 # B-plan, R-POMCP and ROP-RAS3 (uniform and dynamic), 30 episodes each, at the paper's 150 simulations per call
 # and at a time budget of a tenth of a second per call (the target: <= 0.1 s per call).
 # Usage: scripts/reproduce-arm-results.sh [OUT_DIR] [EPISODES] (defaults: results-arm/, 30); then
-# `ropras table OUT_DIR/ss-*.jsonl`. Long: about 10-20 s per ROP-RAS3 / R-POMCP episode on one core at 150 sims.
+# `ropras table OUT_DIR/ss-*.jsonl`. Sphere-Search: about 1-3 s per episode on one core; Ray-Detect longer.
+# doc/results.md's Sphere-Search table: ARM_SEED=9001 and 60 episodes.
 # Extra run options (e.g. --config delta.json) may be given in ARM_EXTRA; ARM_SEED sets the run seed (default
 # 1000, never used while tuning); ARM_BUDGETS="sims" runs only the rows at the paper's simulation counts.
 set -u
@@ -28,7 +29,7 @@ for budget in "${budgets[@]}"; do
   # shellcheck disable=SC2086
   run ss-$tag-bplan-d $SS --solver bplan $opt
   # shellcheck disable=SC2086
-  run ss-$tag-rpomcp-u $SS --solver rpomcp --heuristic uniform $opt
+  run ss-$tag-rpomcp-d $SS --solver rpomcp $opt
   # shellcheck disable=SC2086
   run ss-$tag-ropras3-u $SS --solver ropras3 --heuristic uniform $opt
   # shellcheck disable=SC2086
