@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "ExpectError.h"
+#include "SvgTestUtil.h"
 #include "ropras/core/Error.h"
 #include "ropras/scenarios/ExperimentRunner.h"
 #include "ropras/scenarios/SvgRenderer.h"
@@ -80,18 +81,6 @@ namespace ropras::scenarios::test
             const auto status = doc.Parse(svg.c_str(), svg.size());
             EXPECT_EQ(status, tinyxml2::XML_SUCCESS) << doc.ErrorStr();
             return status == tinyxml2::XML_SUCCESS;
-        }
-
-        const tinyxml2::XMLElement *findById(const tinyxml2::XMLElement *e, const std::string &id)
-        {
-            for (; e; e = e->NextSiblingElement())
-            {
-                if (e->Attribute("id") && id == e->Attribute("id"))
-                    return e;
-                if (const auto *inner = findById(e->FirstChildElement(), id))
-                    return inner;
-            }
-            return nullptr;
         }
 
         std::size_t countElements(const tinyxml2::XMLElement *e, const std::string &name,

@@ -52,8 +52,8 @@ namespace ropras::scenarios::detail
             std::vector<std::pair<std::size_t, bool>> changes;  // step, held after it
             for (const auto &e : (*rec.json)["events"])
             {
-                if (!e.is_object() || !e.contains("step") || !e["step"].is_number_unsigned() || !e.contains("event") ||
-                    !e["event"].is_string())
+                if (!e.is_object() || !e.contains("step") || !e["step"].is_number_integer() ||
+                    e["step"].get<long>() < 0 || !e.contains("event") || !e["event"].is_string())
                 {
                     r.fail("events", "must hold {\"step\": n, \"event\": name} entries, not " + Reader::clip(e));
                 }
@@ -146,7 +146,7 @@ namespace ropras::scenarios::detail
                 return o[key].get<std::string>();
             };
             if (o.contains("holder"))
-                labelIndex(rec, o["holder"], "scene.objects.holder", r);
+                out.holder = long(labelIndex(rec, o["holder"], "scene.objects.holder", r));
             for (std::size_t i = 0; i < o["labels"].size(); ++i)
             {
                 const std::size_t k =
@@ -194,7 +194,16 @@ namespace ropras::scenarios::detail
         if (!objects.slots.empty())
         {
             svg << group("slots");
+            // the reserved slot last, so that a slot it overlaps (the same x in the side view) does not cover it
+            std::vector<std::size_t> order;
             for (std::size_t i = 0; i < objects.slots.size(); ++i)
+            {
+                if (long(i) != objects.reserved)
+                    order.push_back(i);
+            }
+            if (objects.reserved >= 0)
+                order.push_back(std::size_t(objects.reserved));
+            for (const std::size_t i : order)
             {
                 const Shape &s = objects.slots[i];
                 const bool reserved = long(i) == objects.reserved;
@@ -220,7 +229,8 @@ namespace ropras::scenarios::detail
                 const std::size_t k = objects.labels[i];
                 const bool held = objects.held[i][step];
                 const std::string colour = objectColour(i);
-                body(svg, f, rec.paths[k][step], objects.radius, objects.height,
+                const std::size_t at = held && objects.holder >= 0 ? std::size_t(objects.holder) : k;
+                body(svg, f, rec.paths[at][step], objects.radius, objects.height,
                      std::string("class=\"can") + (held ? " held" : "") + "\" data-label=\"" +
                          xmlEscape(rec.labels[k]) + "\" data-step=\"" + std::to_string(step) + "\" fill=\"" +
                          (held ? "none" : colour) + "\" fill-opacity=\"" + num(0.08 + 0.2 * late) + "\" stroke=\"" +

@@ -24,6 +24,7 @@ namespace ropras::scenarios::detail
     struct SceneObjects
     {
         std::vector<std::size_t> labels;  ///< indices into the recording's labels
+        long holder{-1};                  ///< index of the label that carries held objects, -1 = none
         double radius{0.0}, height{0.0};
         std::vector<std::vector<bool>> held;  ///< per object, per step
         std::vector<Shape> slots;
@@ -43,9 +44,10 @@ namespace ropras::scenarios::detail
     /** \brief Whether recorded label \a label is one of the objects (its particles are drawn by drawObjectBeliefs). */
     bool isObjectLabel(const SceneObjects &objects, std::size_t label);
 
-    /** \brief The slots (class "slot", the reserved one "slot reserved") and the objects at the chosen steps
-        (class "can", held ones "can held") in \a f's plane: circles of the radius in the top view, rectangles
-        radius x height in a side view (\a main: the top view, whose groups carry ids). */
+    /** \brief The slots (class "slot", the reserved one "slot reserved", drawn last) and the objects at the chosen
+        steps (class "can"; held ones "can held", at the holder's position when the scene names one) in \a f's
+        plane: circles of the radius in the top view, 2 radius x height rectangles in a side view (\a main: the top
+        view, whose groups carry ids). */
     void drawObjects(std::ostringstream &svg, const SvgFrame &f, const SceneObjects &objects, const Recording &rec,
                      bool main);
 
