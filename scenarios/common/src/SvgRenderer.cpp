@@ -317,6 +317,64 @@ namespace ropras::scenarios
             }
             return legend;
         }
+        /// the top view (x right, y up) of \a rec's bounds, \a width px wide, and the side view (x right, z up) below
+        std::array<SvgFrame, 2> viewFrames(const Recording &rec, double width)
+        {
+            SvgFrame top;
+            top.lo = rec.bounds.lo;
+            top.hi = rec.bounds.hi;
+            top.scale = width / (top.hi[0] - top.lo[0]);
+            top.left = detail::AXIS_MARGIN;
+            top.top = 72.0;
+            top.clipId = "clip-top";
+            top.name = "top view";
+            SvgFrame side = top;
+            side.v = 2;
+            side.clipId = "clip-side";
+            side.name = "side view";
+            side.top = top.top + top.height() + detail::AXIS_BELOW + 18.0;
+            return {top, side};
+        }
+
+        /// the lines above the views (font sizes 16 bold, 13, 11): the title, the outcome, what the views show
+        std::array<std::string, 3> headerLines(const Recording &rec, bool sideView)
+        {
+            const std::string views = rec.dims == 3 ? "top view (x, y; higher boxes darker)" +
+                                                          std::string(sideView ? ", side view (x, z) below" : "")
+                                                    : std::string("top view (x, y)");
+            return {rec.title, rec.subtitle, views + "; arrows show the direction of travel, a filled disc the end"};
+        }
+
+        /// about the width in pixels of the longest header line (sans-serif: ~0.54 em a character, bold ~0.62)
+        double headerWidth(const std::array<std::string, 3> &lines)
+        {
+            return std::max({0.62 * 16.0 * double(lines[0].size()), 0.54 * 13.0 * double(lines[1].size()),
+                             0.54 * 11.0 * double(lines[2].size())});
+        }
+
+        /// the svg element, the views' clip paths, the white background and the header lines
+        void openDocument(std::ostringstream &svg, const std::array<std::string, 3> &header,
+                          const std::array<SvgFrame, 2> &frames, double width, double height)
+        {
+            svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(width) << "\" height=\"" << num(height)
+                << "\" viewBox=\"0 0 " << num(width) << " " << num(height) << "\" font-family=\"sans-serif\">\n";
+            svg << "<title>" << xmlEscape(header[0]) << "</title>\n";
+            svg << "<defs>\n";
+            for (const SvgFrame &f : frames)
+            {
+                svg << "<clipPath id=\"" << f.clipId << "\"><rect x=\"" << num(f.left) << "\" y=\"" << num(f.top)
+                    << "\" width=\"" << num(f.width()) << "\" height=\"" << num(f.height()) << "\"/></clipPath>\n";
+            }
+            svg << "</defs>\n<rect x=\"0\" y=\"0\" width=\"" << num(width) << "\" height=\"" << num(height)
+                << "\" fill=\"#ffffff\"/>\n";
+            const double left = frames[0].left;
+            svg << "<text x=\"" << num(left) << "\" y=\"22\" font-size=\"16\" font-weight=\"bold\">"
+                << xmlEscape(header[0]) << "</text>\n";
+            svg << "<text x=\"" << num(left) << "\" y=\"44\" font-size=\"13\">" << xmlEscape(header[1]) << "</text>\n";
+            svg << "<text x=\"" << num(left) << "\" y=\"62\" font-size=\"11\" fill=\"#555555\">" << xmlEscape(header[2])
+                << "</text>\n";
+        }
     }  // namespace
 
     nlohmann::json loadRecording(const std::string &path)
@@ -349,26 +407,6 @@ namespace ropras::scenarios
         std::size_t lastStep = 0;
         for (const auto *b : beliefs)
             lastStep = std::max(lastStep, b->step);
-
-        // layout: the top view (x right, y up) and, for 3-D problems, a side view (x right, z up) below it, both
-        // with metric axes; then the legend rows
-        const bool is3d = rec.dims == 3;
-        SvgFrame top;
-        top.lo = rec.bounds.lo;
-        top.hi = rec.bounds.hi;
-        top.scale = options.width / (top.hi[0] - top.lo[0]);
-        top.left = detail::AXIS_MARGIN;
-        top.top = 72.0;
-        top.clipId = "clip-top";
-        top.name = "top view";
-        SvgFrame side = top;
-        side.v = 2;
-        side.clipId = "clip-side";
-        side.name = "side view";
-        side.top = top.top + top.height() + detail::AXIS_BELOW + 18.0;
-        const bool sideView = is3d && rec.bounds.hi[2] > rec.bounds.lo[2];
-        const double viewsBottom = (sideView ? side.top + side.height() : top.top + top.height()) + detail::AXIS_BELOW;
-        const double totalWidth = top.left + top.width() + 24.0;
         const auto slash = source.rfind('/');
         const std::string folder = slash == std::string::npos ? "." : source.substr(0, slash);
         const detail::ArmPoses arm = detail::armPoses(recording, rec.paths.front().size(), options.armSteps, r, folder);
@@ -376,34 +414,22 @@ namespace ropras::scenarios
                                                            ? detail::readRecordedRays(recording["rays"], r)
                                                            : std::vector<detail::RecordedRays>();
         const detail::SceneObjects objects = detail::readSceneObjects(rec, options.armSteps, r);
+
+        // layout: the header, the top view and, for 3-D problems, the side view below it, both with metric axes;
+        // then the legend rows (as wide as the header's longest line at least)
+        const auto frames = viewFrames(rec, options.width);
+        const SvgFrame &top = frames[0], &side = frames[1];
+        const bool sideView = rec.dims == 3 && rec.bounds.hi[2] > rec.bounds.lo[2];
+        const auto header = headerLines(rec, sideView);
+        const double viewsBottom = (sideView ? side.top + side.height() : top.top + top.height()) + detail::AXIS_BELOW;
+        const double totalWidth = std::max(top.left + top.width() + 24.0, top.left + headerWidth(header) + 12.0);
         const auto legend = legendEntries(rec, !beliefs.empty(), !arm.steps.empty(), !rays.empty(), objects, r);
         detail::Legend placed = detail::layoutLegend(legend, top.left, viewsBottom + 14.0, totalWidth - 12.0);
         const double gradientHeight = beliefs.empty() ? 0.0 : 30.0;
         const double totalHeight = placed.bottom + gradientHeight + 12.0;
 
         std::ostringstream svg;
-        svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-            << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(totalWidth) << "\" height=\""
-            << num(totalHeight) << "\" viewBox=\"0 0 " << num(totalWidth) << " " << num(totalHeight)
-            << "\" font-family=\"sans-serif\">\n";
-        svg << "<title>" << xmlEscape(rec.title) << "</title>\n";
-        svg << "<defs>\n";
-        for (const SvgFrame *f : {&top, &side})
-        {
-            svg << "<clipPath id=\"" << f->clipId << "\"><rect x=\"" << num(f->left) << "\" y=\"" << num(f->top)
-                << "\" width=\"" << num(f->width()) << "\" height=\"" << num(f->height()) << "\"/></clipPath>\n";
-        }
-        svg << "</defs>\n<rect x=\"0\" y=\"0\" width=\"" << num(totalWidth) << "\" height=\"" << num(totalHeight)
-            << "\" fill=\"#ffffff\"/>\n";
-        svg << "<text x=\"" << num(top.left) << "\" y=\"22\" font-size=\"16\" font-weight=\"bold\">"
-            << xmlEscape(rec.title) << "</text>\n";
-        svg << "<text x=\"" << num(top.left) << "\" y=\"44\" font-size=\"13\">" << xmlEscape(rec.subtitle)
-            << "</text>\n";
-        svg << "<text x=\"" << num(top.left) << "\" y=\"62\" font-size=\"11\" fill=\"#555555\">"
-            << (is3d ? "top view (x, y; higher boxes darker)" + std::string(sideView ? ", side view (x, z) below" : "")
-                     : std::string("top view (x, y)"))
-            << "; arrows show the direction of travel, a filled disc the end</text>\n";
-
+        openDocument(svg, header, frames, totalWidth, totalHeight);
         const ViewParts parts{rec, beliefs, r, robotRadius, lastStep, arm, rays, objects};
         detail::LabelPlacer labels(top.left, top.top, top.left + top.width(), top.top + top.height());
         drawView(svg, top, parts, true, labels);
