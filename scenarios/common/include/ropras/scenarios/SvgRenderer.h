@@ -28,7 +28,7 @@ namespace ropras::scenarios
         but for shading 3-D boxes, higher ones darker): the bounds, walls (gray), obstacles (cyan), danger
         zones (red), observation zones / landmarks / light (purple), the goal (green), the starts (orange),
         the executed trajectory of every label (drones in distinct colours, the target green), belief
-        particles (yellow, semi-transparent) with the true position at the chosen steps, the robot's collision
+        particles (coloured by their step) with the true position at the chosen steps, the robot's collision
         spheres posed by forward kinematics at the chosen arm steps when the recording has "robot" (URDF +
         configurations; coloured by time), the recorded "rays" (red segments), the scene's "objects" (cans, one
         colour each, held ones dashed at the holder; their belief particles in their colour) at the chosen arm
