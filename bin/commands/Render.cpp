@@ -90,7 +90,8 @@ namespace
         app.add_option("--steps", o->steps, "Belief steps to draw, e.g. 0,50,100 (default: every recorded belief)");
         app.add_option(
             "--arm-steps", o->armSteps,
-            "Steps at which a recorded robot (an arm) is drawn posed, e.g. 0,20,40 (default: 6 spread evenly)");
+            "Steps at which a recorded robot (an arm) is drawn posed and the scene's objects (cans) are drawn, e.g. "
+            "0,20,40 (default: 6 spread evenly)");
         app.add_option("--width", o->width, "Width of the map in pixels")
             ->capture_default_str()
             ->check(ropras::bin::numberCheck(50.0, false, false, "WIDTH >= 50", 100000.0));

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "ExpectError.h"
+#include "SvgTestUtil.h"
 #include "ropras/core/Error.h"
 #include "ropras/scenarios/ExperimentRunner.h"
 #include "ropras/scenarios/SvgRenderer.h"
@@ -80,18 +81,6 @@ namespace ropras::scenarios::test
             const auto status = doc.Parse(svg.c_str(), svg.size());
             EXPECT_EQ(status, tinyxml2::XML_SUCCESS) << doc.ErrorStr();
             return status == tinyxml2::XML_SUCCESS;
-        }
-
-        const tinyxml2::XMLElement *findById(const tinyxml2::XMLElement *e, const std::string &id)
-        {
-            for (; e; e = e->NextSiblingElement())
-            {
-                if (e->Attribute("id") && id == e->Attribute("id"))
-                    return e;
-                if (const auto *inner = findById(e->FirstChildElement(), id))
-                    return inner;
-            }
-            return nullptr;
         }
 
         std::size_t countElements(const tinyxml2::XMLElement *e, const std::string &name,
@@ -383,6 +372,30 @@ namespace ropras::scenarios::test
         const double width = root->DoubleAttribute("width");
         for (const auto *t = findById(root, "legend")->FirstChildElement("text"); t; t = t->NextSiblingElement("text"))
             EXPECT_LE(t->DoubleAttribute("x") + 7.0 * std::string(t->GetText()).size(), width) << t->GetText();
+    }
+
+    // A narrow map widens the picture so that the header's lines fit (about half an em a character).
+    TEST(SvgRenderer, ANarrowMapWidensThePictureForTheHeader)
+    {
+        SvgOptions options;
+        options.width = 60.0;
+        const std::string svg = renderSvg(droneRecording(), options);
+        tinyxml2::XMLDocument doc;
+        ASSERT_TRUE(parse(svg, doc));
+        const auto *root = doc.RootElement();
+        const double width = root->DoubleAttribute("width");
+        EXPECT_GT(width, 60.0 + 58.0 + 24.0);
+        std::size_t lines = 0;
+        for (const auto *t = root->FirstChildElement("text"); t; t = t->NextSiblingElement("text"), ++lines)
+        {
+            const double em = t->DoubleAttribute("font-size");
+            EXPECT_LE(t->DoubleAttribute("x") + 0.5 * em * std::string(t->GetText()).size(), width) << t->GetText();
+        }
+        EXPECT_EQ(lines, 3u) << "title, outcome, what the views show";
+        // a wide map keeps its own width
+        options.width = 2000.0;
+        ASSERT_TRUE(parse(renderSvg(droneRecording(), options), doc));
+        EXPECT_DOUBLE_EQ(doc.RootElement()->DoubleAttribute("width"), 58.0 + 2000.0 + 24.0);
     }
 
     TEST(SvgRenderer, LoadRecordingNamesTheFile)

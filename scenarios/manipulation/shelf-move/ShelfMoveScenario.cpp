@@ -17,7 +17,9 @@ namespace ropras::scenarios
             "Shelf-Move: a 7-DoF Panda clears packed cans off a shelf and places the target can on its reserved "
             "top slot (H = 3000)";
 
-        /// the renderer's format (doc/scenarios.md): the shelf boxes as obstacles, cans and slots as discs
+        /** \brief The renderer's format (doc/scenarios.md): the shelf boxes as obstacles, the cans as scene
+            objects (held from a "grasp-canK" event until "release-canK-slotJ", carried by the end effector), the
+            slots with the reserved one, the goal around it. */
         nlohmann::json shelfMoveScene(const ShelfMoveConfig &config, const ShelfMoveModel &model)
         {
             nlohmann::json boxes = nlohmann::json::array();
@@ -27,17 +29,16 @@ namespace ropras::scenarios
                                  {b[0] + 0.5 * b[3], b[1] + 0.5 * b[4], b[2] + 0.5 * b[5]}});
             }
             nlohmann::json slots = nlohmann::json::array();
-            for (std::size_t i = 0; i < config.slots.size(); ++i)
+            for (const auto &s : config.slots)
             {
-                const auto &s = config.slots[i];
                 slots.push_back({{"center", {s[0], s[1], s[2]}}, {"radius", config.canRadius}});
             }
             const auto &reserved = config.slots[config.reservedSlot];
             const Eigen::Vector3d ee = model.endEffector(model.trueInitialState());
-            nlohmann::json discs = nlohmann::json::object();
+            nlohmann::json cans = nlohmann::json::array();
             for (std::size_t k = 0; k < SHELF_CANS; ++k)
             {
-                discs["can" + std::to_string(k)] = config.canRadius;
+                cans.push_back("can" + std::to_string(k));
             }
             return {
                 {"dims", 3},
@@ -45,10 +46,17 @@ namespace ropras::scenarios
                 {"walls", nlohmann::json::array()},
                 {"obstacles", boxes},
                 {"danger_zones", nlohmann::json::array()},
-                {"observation_zones", slots},
+                {"objects",
+                 {{"labels", cans},
+                  {"radius", config.canRadius},
+                  {"height", config.canLength},
+                  {"holder", "end_effector"},
+                  {"grasp_event", "grasp-"},
+                  {"release_event", "release-"}}},
+                {"slots", slots},
+                {"reserved_slot", config.reservedSlot},
                 {"goal", {{{"center", {reserved[0], reserved[1], reserved[2]}}, {"radius", config.placeTolerance}}}},
                 {"starts", {{ee.x(), ee.y(), ee.z()}}},
-                {"discs", discs},
                 {"robot_radius", 0.02}};
         }
     }  // namespace
