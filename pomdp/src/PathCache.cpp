@@ -6,6 +6,7 @@
 #include <string>
 
 #include "ropras/core/Error.h"
+#include "ropras/ompl_ext/motion/JointSteps.h"
 
 namespace ropras::pomdp
 {
@@ -84,9 +85,7 @@ namespace ropras::pomdp
             }
             if (length2 == 0.0)
                 continue;
-            // discretizeJointPath's equal split: ceil(length / step) pieces (a remainder below 1e-9 is rounding)
-            pieces +=
-                static_cast<std::size_t>(std::max(1.0, std::ceil(std::sqrt(length2) / settings_.prefixStep - 1e-9)));
+            pieces += ompl_ext::segmentPieces(std::sqrt(length2), settings_.prefixStep);
             if (pieces >= settings_.prefixSteps)
                 return s + 2;
         }

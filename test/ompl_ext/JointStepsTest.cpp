@@ -91,6 +91,23 @@ namespace ropras::ompl_ext
             EXPECT_NEAR(points[i], exactPoints[i], 1e-12) << i;
     }
 
+    TEST(JointSteps, SegmentPiecesCountsWhatDiscretizeCuts)
+    {
+        EXPECT_EQ(segmentPieces(0.05, 0.1), 1u);
+        EXPECT_EQ(segmentPieces(0.1, 0.1), 1u);
+        EXPECT_EQ(segmentPieces(3 * 0.1, 0.1), 3u);  // 3 * 0.1 / 0.1 = 3.0000000000000004: rounding, no 4th piece
+        EXPECT_EQ(segmentPieces(0.30001, 0.1), 4u);
+        std::mt19937 gen(17);
+        std::uniform_real_distribution<double> length(1e-6, 3.0);
+        for (int trial = 0; trial < 200; ++trial)
+        {
+            const double l = length(gen);
+            const std::vector<double> path{0.0, 0.0, l, 0.0};
+            std::vector<double> points;
+            EXPECT_EQ(discretizeJointPath(path.data(), 2, 2, 0.1, 0, points), segmentPieces(l, 0.1)) << l;
+        }
+    }
+
     TEST(JointSteps, BadPathsThrowNamingTheValue)
     {
         const std::vector<double> path{0.0, 0.0, 0.3, 0.0};

@@ -55,8 +55,7 @@ namespace ropras::ompl_ext
             const double length = segmentLength(a, b, dof, options.norm);
             if (length == 0.0)
                 continue;
-            // a remainder below 1e-9 steps is rounding: the segment is a whole number of steps
-            const auto pieces = static_cast<std::size_t>(std::max(1.0, std::ceil(length / step - 1e-9)));
+            const std::size_t pieces = segmentPieces(length, step);
             for (std::size_t i = 1; i <= pieces; ++i)
             {
                 if (options.maxSteps != 0 && added >= options.maxSteps)

@@ -1,6 +1,7 @@
 #ifndef ROPRAS_OMPL_EXT_JOINT_STEPS_H
 #define ROPRAS_OMPL_EXT_JOINT_STEPS_H
 
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -31,6 +32,16 @@ namespace ropras::ompl_ext
         StepSplit split{StepSplit::Exact};
         std::size_t maxSteps{0};  ///< at most this many steps (a truncated macro ends on the path); 0 = whole path
     };
+
+    /** \brief The number of primitive steps a straight segment of norm \a length (> 0) is cut into with steps
+        of at most \a step: ceil(length / step), at least 1, where a remainder below 1e-9 steps is rounding
+        (a segment of exactly k steps is k pieces). The rule of discretizeJointPath, for callers that need
+        the count without the points. */
+    inline std::size_t segmentPieces(double length, double step) noexcept
+    {
+        const double pieces = std::ceil(length / step - 1e-9);
+        return pieces > 1.0 ? static_cast<std::size_t>(pieces) : 1;
+    }
 
     /** \brief Cuts a piecewise-linear joint-space path (\a waypoints, \a count x \a dof, row-major) into
         primitive steps and appends the end of every step to \a points (\a dof values each; the start is not
