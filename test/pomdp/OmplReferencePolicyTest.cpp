@@ -260,6 +260,56 @@ namespace ropras::pomdp::test
         EXPECT_LT(distanceToPath(policy.planner().path(), x, y), 1e-9);
     }
 
+    // The planning margin's fallback: the policy plans in obstacles grown by 5 cm; a particle that noise put inside
+    // that margin (valid in the true obstacles, invalid in the grown ones) is planned for in its true obstacles,
+    // posed like the grown ones (the door where the particle believes it), instead of failing as an invalid start.
+    TEST(OmplReferencePolicy, StartsInsideThePlanningMarginPlanInTheTrueObstacles)
+    {
+        constexpr double MARGIN = 0.05;
+        auto grown = std::make_shared<ompl_ext::Environment>();
+        grown->addBox("wall", Eigen::Isometry3d(Eigen::Translation3d(0.5, 0.5, 0.0)),
+                      Eigen::Vector3d(0.06 + 2 * MARGIN, 0.5 + 2 * MARGIN, 0.2));
+        grown->addBox("door", Eigen::Isometry3d(Eigen::Translation3d(0.5, PointRobotModel::doorY(0), 0.0)),
+                      Eigen::Vector3d(0.06 + 2 * MARGIN, 0.25 + 2 * MARGIN, 0.2));
+        auto space = std::make_shared<const FixedTargetSpace>(PointRobotModel::GOAL);
+        OmplPathPlannerSettings settings;
+        settings.resolution = POINT_RESOLUTION;
+        Policy policy(std::make_shared<const PointPlanningAdapter>(),
+                      std::make_unique<UniformHeuristic<State, Point2>>(space), pointRobot(), grown, settings);
+        const auto &checker = policy.planner().checker();
+        // 2 cm from the wall's face: clear of the true wall, 3 cm deep in the grown one
+        const State marginal = particle(1, 0.47 - PLANNING_RADIUS - 0.02, 0.5);
+        const double q[2]{marginal.x, marginal.y};
+        ASSERT_TRUE(checker.isValid(*pointEnvironment(), q));
+        ASSERT_FALSE(checker.isValid(*grown, q));
+        Rng rng(5);
+        std::vector<Action> macro;
+        EXPECT_FALSE(policy.sample(marginal, BeliefView<State>{&marginal, 1}, rng, macro)) << "no fallback yet";
+        EXPECT_EQ(policy.lastStatus(), PathPlanStatus::InvalidStart);
+
+        policy.setTrueEnvironment(pointEnvironment());
+        ASSERT_TRUE(policy.sample(marginal, BeliefView<State>{&marginal, 1}, rng, macro));
+        EXPECT_EQ(policy.statistics().marginStarts, 1u);
+        const auto &used = *policy.planner().environment();
+        EXPECT_TRUE(checker.isValid(used, q)) << "planned in the true obstacles";
+        EXPECT_EQ(used.objectPose(used.objectId("door")).translation().y(), PointRobotModel::doorY(1))
+            << "posed as the particle believes";
+        const auto truth = environmentFor(1);
+        const auto &path = policy.planner().path();
+        for (std::size_t i = 0; i + 3 < path.size(); i += 2)
+            ASSERT_TRUE(checker.isMotionValid(*truth, &path[i], &path[i + 2], POINT_RESOLUTION, nullptr, true));
+
+        // a start clear of the margin keeps the grown obstacles
+        const State clear = particle(1);
+        ASSERT_TRUE(policy.sample(clear, BeliefView<State>{&clear, 1}, rng, macro));
+        EXPECT_FALSE(checker.isValid(*policy.planner().environment(), q)) << "planned in the grown obstacles";
+        // a start in collision in the true obstacles too stays an invalid start
+        const State inside = particle(1, 0.5, 0.5);
+        EXPECT_FALSE(policy.sample(inside, BeliefView<State>{&inside, 1}, rng, macro));
+        EXPECT_EQ(policy.lastStatus(), PathPlanStatus::InvalidStart);
+        EXPECT_EQ(policy.statistics().marginStarts, 1u);
+    }
+
     TEST(OmplReferencePolicy, FailuresAreCountedNotThrown)
     {
         OmplPathPlannerSettings settings;

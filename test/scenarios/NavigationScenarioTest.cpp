@@ -6,6 +6,7 @@
 
 #include "ExpectError.h"
 #include "NavigationTestUtil.h"
+#include "ReferencePolicyTestUtil.h"
 #include "ropras/scenarios/navigation/NavigationPlanning.h"
 
 namespace ropras::scenarios::test
@@ -169,11 +170,8 @@ namespace ropras::scenarios::test
         // 1 m above the zone: invalid for the grown obstacles, so the adapter hands the planner the true zones
         const auto scenario = navScenario("maze2d");
         const auto &parts = asNav(*scenario).parts();
-        RunSettings settings;
-        settings.heuristic = "uniform";
-        pomdp::ParameterMap params;
-        auto policy = parts.referencePolicy(settings, params, 3);
-        auto *ompl = dynamic_cast<pomdp::OmplReferencePolicy<NavigationModel, NavTarget> *>(policy.get());
+        const auto policy = omplReferencePolicy<NavTarget>(parts, "uniform", 3);
+        auto *ompl = policy.ompl;
         ASSERT_NE(ompl, nullptr);
         const NavState nearDanger = at(-6.0, -4.0);
         const NavState farAway = at(-20.0, 15.0);
@@ -187,14 +185,16 @@ namespace ropras::scenarios::test
             solved += ok ? 1 : 0;
         }
         EXPECT_GE(solved, 5u);
+        EXPECT_EQ(ompl->statistics().marginStarts, 10u) << "every plan from inside the margin used the true zones";
         // the base (grown) obstacles reject that start: the fallback is what makes it plan
         const auto grown = navigationEnvironment(asNav(*scenario).parts().model->config());
         const auto tight = navigationEnvironment(asNav(*scenario).parts().model->config(), 0.0);
         EXPECT_LT(grown->signedDistance(Eigen::Vector3d(-6.0, -4.0, 0.0), 0.25), 0.0);
         EXPECT_GT(tight->signedDistance(Eigen::Vector3d(-6.0, -4.0, 0.0), 0.25), 0.0);
         // far from every danger zone the base obstacles are kept
-        NavigationPlanningAdapter adapter(parts.model, 15, tight);
-        EXPECT_EQ(adapter.environment(nearDanger), tight);
-        EXPECT_EQ(adapter.environment(farAway), nullptr);
+        std::vector<std::uint8_t> macro;
+        ompl->sample(farAway, pomdp::BeliefView<NavState>{&farAway, 1}, rng, macro);
+        EXPECT_EQ(ompl->statistics().marginStarts, 10u);
+        EXPECT_LT(ompl->planner().environment()->signedDistance(Eigen::Vector3d(-6.0, -4.0, 0.0), 0.25), 0.0);
     }
 }  // namespace ropras::scenarios::test

@@ -7,11 +7,13 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "ReferencePolicyTestUtil.h"
 #include "ShelfMoveTestUtil.h"
 #include "ropras/core/Error.h"
 #include "ropras/pomdp/OmplPathPlanner.h"
 #include "ropras/scenarios/ScenarioRegistry.h"
 #include "ropras/scenarios/manipulation/ShelfMovePlanning.h"
+#include "ropras/scenarios/manipulation/ShelfMoveScenario.h"
 
 namespace ropras::scenarios
 {
@@ -68,7 +70,10 @@ namespace ropras::scenarios
             settings.timeLimit = 2.0;
             settings.resolution = model()->config().resolution;
             settings.plannerParams["seed"] = std::to_string(seed);
-            pomdp::OmplPathPlanner planner(model()->arm().robot(), adapter.environment(s), settings);
+            auto scene = adapter.environment(s);
+            if (!model()->arm().checker()->isValid(*scene, s.q))
+                scene = adapter.trueEnvironment(s);  // inside the planning margin: as OmplReferencePolicy plans it
+            pomdp::OmplPathPlanner planner(model()->arm().robot(), scene, settings);
             if (planner.plan(s.q, goal) != pomdp::PathPlanStatus::Solved)
             {
                 out.failure = "plan";
@@ -292,8 +297,9 @@ namespace ropras::scenarios
     }
 
     // Near a grasp deep in the shelf, noise puts the arm inside the planning margin: valid in the true scene, invalid
-    // in the grown one. The adapter then plans in the true scene (in which the start is valid) instead of failing every
-    // plan as an invalid start; a start invalid in both keeps the planning scene (the planner reports it).
+    // in the grown one. The adapter's planning scene is the grown one and its trueEnvironment the true one, so the
+    // scenario's reference policy plans such a start in its true scene instead of failing every plan as an invalid
+    // start; a start invalid in both stays an invalid start.
     TEST(ShelfMoveModel, ParticlesInsideThePlanningMarginPlanInTheirTrueScene)
     {
         const auto &m = *model();
@@ -302,11 +308,14 @@ namespace ropras::scenarios
         double grasp[ARM_DOF];
         ASSERT_TRUE(solveTarget(s0, space.grasp(s0, 1), grasp));
         ShelfMoveAdapter adapter(model(), std::make_unique<ShelfMoveIk>(model(), 30, 3));
+        const auto parts = shelfMoveParts();
+        const auto policy = test::omplReferencePolicy<ShelfTarget>(parts, "uniform", 5);
+        auto *ompl = policy.ompl;
+        ASSERT_NE(ompl, nullptr);
         const auto &checker = *m.arm().checker();
         pomdp::Rng rng(12);
         int inside = 0, clear = 0, invalid = 0;
-        std::vector<double> marginal;  // a configuration inside the margin: the grown scene rejects it
-        for (int attempt = 0; attempt < 4000 && (inside < 5 || clear < 5); ++attempt)
+        for (int attempt = 0; attempt < 4000 && (inside < 5 || clear < 5 || invalid < 2); ++attempt)
         {
             State s = s0;
             for (std::size_t j = 0; j < ARM_DOF; ++j)
@@ -314,32 +323,40 @@ namespace ropras::scenarios
             m.arm().clamp(s.q);
             const bool trueValid = checker.isValid(*m.makeScene(s, false), s.q);
             const bool grownValid = checker.isValid(*m.makeScene(s, true), s.q);
-            const auto env = adapter.environment(s);
-            ASSERT_NE(env, nullptr);
+            ASSERT_EQ(checker.isValid(*adapter.environment(s), s.q), grownValid);
+            ASSERT_EQ(checker.isValid(*adapter.trueEnvironment(s), s.q), trueValid);
+            ASSERT_EQ(checker.isValid(*adapter.environment(s), s.q), grownValid) << "the scene cache stays coherent";
+            const bool interesting =
+                (trueValid && !grownValid && inside < 5) || (grownValid && clear < 5) || (!trueValid && invalid < 2);
+            if (!interesting)
+                continue;
+            const std::size_t margin = ompl->statistics().marginStarts, noTarget = ompl->statistics().noTarget;
+            std::vector<ShelfMoveAction> macro;
+            ompl->sample(s, pomdp::BeliefView<State>{&s, 1}, rng, macro);
+            if (ompl->statistics().noTarget > noTarget)
+                continue;  // no plan ran
             if (trueValid && !grownValid)
             {
                 ++inside;
-                EXPECT_TRUE(checker.isValid(*env, s.q)) << "planned for in the true scene";
-                marginal.assign(s.q, s.q + ARM_DOF);
+                EXPECT_EQ(ompl->statistics().marginStarts, margin + 1);
+                EXPECT_NE(ompl->lastStatus(), pomdp::PathPlanStatus::InvalidStart) << "planned in the true scene";
             }
             else if (grownValid)
             {
-                EXPECT_TRUE(checker.isValid(*env, s.q));
-                if (!marginal.empty())
-                {
-                    ++clear;
-                    EXPECT_FALSE(checker.isValid(*env, marginal.data())) << "a clear start plans in the grown scene";
-                }
+                ++clear;
+                EXPECT_EQ(ompl->statistics().marginStarts, margin);
             }
             else
             {
                 ++invalid;
-                EXPECT_FALSE(checker.isValid(*env, s.q)) << "an invalid start stays invalid";
+                EXPECT_EQ(ompl->statistics().marginStarts, margin);
+                EXPECT_EQ(ompl->lastStatus(), pomdp::PathPlanStatus::InvalidStart) << "an invalid start stays invalid";
             }
         }
-        EXPECT_GE(inside, 5) << "configurations inside the margin near the grasp were found (" << clear << " clear, "
+        EXPECT_EQ(inside, 5) << "configurations inside the margin near the grasp were found (" << clear << " clear, "
                              << invalid << " in collision)";
-        EXPECT_GE(clear, 5);
+        EXPECT_EQ(clear, 5);
+        EXPECT_EQ(invalid, 2);
     }
 
     TEST(ShelfMoveModel, ObservationsDetectNearCansOnlyAndTheirLikelihoodIsTheSoftenedBox)

@@ -11,6 +11,7 @@
 #include <ompl/util/Console.h>
 
 #include "ArmScenarioTestUtil.h"
+#include "ReferencePolicyTestUtil.h"
 #include "ropras/core/Error.h"
 #include "ropras/pomdp/OmplPathPlanner.h"
 #include "ropras/pomdp/ParticleFilter.h"
@@ -460,41 +461,51 @@ namespace ropras::scenarios
     }
 
     // A particle that noise pushed inside the planning margin (valid in the true cage, invalid in the grown one) is
-    // planned for in the true cage; any other particle in the reference policy's grown cage.
+    // planned for in the true cage by the scenario's reference policy; any other particle in the grown cage.
     TEST(SphereSearchTest, ParticlesInsideThePlanningMarginPlanInTheTrueWorld)
     {
         const auto &parts = defaultParts();
         const SphereSearchModel &model = *parts.model;
-        auto arm = sharedPandaArm(model.config().endEffector);
-        const auto grown = sphereSearchEnvironment(model.config(), 0.03);
-        ArmPlanningAdapter adapter(std::make_unique<ArmGoalSampler>(arm, grown, ArmGoalSampler::Settings(), 1),
-                                   model.config().step, 10, true, model.environment(), grown, arm);
-        State start = startState(model);
-        EXPECT_EQ(adapter.environment(start), nullptr) << "the start is clear of the margin";
+        const auto &arm = model.arm();
+        const auto grown = sphereSearchEnvironment(model.config(), model.config().planningMargin);
+        const auto policy = test::omplReferencePolicy<ArmTarget>(parts, "uniform", 3);
+        auto *ompl = policy.ompl;
+        ASSERT_NE(ompl, nullptr);
         core::Rng rng(11);
-        std::size_t inside = 0;
-        for (int attempt = 0; attempt < 20000 && inside < 5; ++attempt)
+        std::size_t inside = 0, clear = 0, planned = 0;
+        for (int attempt = 0; attempt < 20000 && (inside < 5 || clear < 5); ++attempt)
         {
-            State s = start;
+            State s = startState(model);
             for (std::size_t j = 0; j < ARM_DOF; ++j)
-                s.q[j] = rng.uniform(arm->lower(j), arm->upper(j));
-            const bool trueValid = arm->checker()->isValid(*model.environment(), s.q);
-            const bool grownValid = arm->checker()->isValid(*grown, s.q);
-            const auto env = adapter.environment(s);
-            if (trueValid && !grownValid)
+                s.q[j] = rng.uniform(arm.lower(j), arm.upper(j));
+            const bool trueValid = arm.checker()->isValid(*model.environment(), s.q);
+            const bool grownValid = arm.checker()->isValid(*grown, s.q);
+            if (!trueValid || (grownValid && clear >= 5))
+                continue;
+            const std::size_t before = ompl->statistics().marginStarts, noTarget = ompl->statistics().noTarget;
+            std::vector<ArmAction> macro;
+            const bool ok = ompl->sample(s, pomdp::BeliefView<State>{&s, 1}, rng, macro);
+            if (ompl->statistics().noTarget > noTarget)
+                continue;  // no plan ran: the target had no IK solution
+            if (!grownValid)
             {
                 ++inside;
-                EXPECT_EQ(env, model.environment());
+                EXPECT_EQ(ompl->statistics().marginStarts, before + 1);
+                EXPECT_NE(ompl->lastStatus(), pomdp::PathPlanStatus::InvalidStart);
+                planned += ok ? 1 : 0;
+                if (ok)
+                    EXPECT_EQ(ompl->planner().environment(), model.environment()) << "planned in the true cage";
             }
-            else if (grownValid)
+            else
             {
-                EXPECT_EQ(env, nullptr);
+                ++clear;
+                EXPECT_EQ(ompl->statistics().marginStarts, before);
+                EXPECT_NE(ompl->planner().environment(), model.environment()) << "planned in the grown cage";
             }
         }
-        EXPECT_EQ(inside, 5u) << "random configurations inside the 3 cm margin were found";
-        EXPECT_THROW(ArmPlanningAdapter(std::make_unique<ArmGoalSampler>(arm, grown, ArmGoalSampler::Settings(), 1),
-                                        0.1, 10, true, nullptr, grown, arm),
-                     Error);
+        EXPECT_EQ(inside, 5u) << "random configurations inside the margin were found";
+        EXPECT_EQ(clear, 5u);
+        EXPECT_GE(planned, 1u) << "some of them reached a plan";
     }
 
     TEST(SphereSearchTest, BadConfigurationValuesNameTheKey)

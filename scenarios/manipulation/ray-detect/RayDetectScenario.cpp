@@ -93,8 +93,11 @@ namespace ropras::scenarios
             const std::size_t macroLength = params.getCount("macro_length", 10);
             auto adapter = std::make_shared<const RayDetectPlanningAdapter>(std::move(sampler), config.step,
                                                                             macroLength, config.waypointActions);
-            return std::make_unique<pomdp::OmplReferencePolicy<RayDetectModel, RayDetectTarget>>(
+            auto policy = std::make_unique<pomdp::OmplReferencePolicy<RayDetectModel, RayDetectTarget>>(
                 adapter, std::move(heuristic), arm->robot(), planningScene, planner);
+            // particles inside the planning margin plan in their true scene (the obstacles posed the same way)
+            policy->setTrueEnvironment(model->nominalScene());
+            return policy;
         };
         parts.world = [model]() -> std::unique_ptr<pomdp::World<RayDetectModel>>
         { return std::make_unique<RayDetectWorld>(model); };

@@ -92,10 +92,10 @@ namespace ropras::scenarios
             auto sampler = std::make_unique<ArmGoalSampler>(arm, planningEnv, ik, seed ^ 0x5bd1e995ULL);
             const std::size_t macroLength = params.getCount("macro_length", 10);
             auto adapter = std::make_shared<const ArmPlanningAdapter>(std::move(sampler), config.step, macroLength,
-                                                                      config.waypointActions, model->environment(),
-                                                                      planningEnv, arm);
+                                                                      config.waypointActions);
             auto policy = std::make_unique<pomdp::OmplReferencePolicy<SphereSearchModel, ArmTarget>>(
                 adapter, std::move(heuristic), arm->robot(), planningEnv, planner);
+            policy->setTrueEnvironment(model->environment());  // particles inside the margin plan in the true cage
             pomdp::PathCache::Settings reuse;
             reuse.radius = params.get("path_reuse", 0.0);
             reuse.pathsPerTarget = params.getCount("path_reuse_paths", reuse.pathsPerTarget);

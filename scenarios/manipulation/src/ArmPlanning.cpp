@@ -174,22 +174,9 @@ namespace ropras::scenarios
     }
 
     ArmPlanningAdapter::ArmPlanningAdapter(std::unique_ptr<ArmGoalSampler> sampler, double step,
-                                           std::size_t macroLength, bool waypoints,
-                                           std::shared_ptr<const ompl_ext::Environment> trueEnvironment,
-                                           std::shared_ptr<const ompl_ext::Environment> grownEnvironment,
-                                           std::shared_ptr<const PandaArm> arm)
-        : sampler_(std::move(sampler)),
-          step_(step),
-          macroLength_(macroLength),
-          waypoints_(waypoints),
-          true_(std::move(trueEnvironment)),
-          grown_(std::move(grownEnvironment)),
-          arm_(std::move(arm))
+                                           std::size_t macroLength, bool waypoints)
+        : sampler_(std::move(sampler)), step_(step), macroLength_(macroLength), waypoints_(waypoints)
     {
-        if ((true_ || grown_ || arm_) && !(true_ && grown_ && arm_))
-        {
-            throw Error("ArmPlanningAdapter: the margin fallback needs the true and grown environments and the arm");
-        }
         if (!sampler_)
         {
             throw Error("ArmPlanningAdapter: null goal sampler");
@@ -207,16 +194,6 @@ namespace ropras::scenarios
     void ArmPlanningAdapter::configuration(const SphereSearchModel::State &state, double *q) const
     {
         std::copy(state.q, state.q + ARM_DOF, q);
-    }
-
-    std::shared_ptr<const ompl_ext::Environment> ArmPlanningAdapter::environment(
-        const SphereSearchModel::State &particle) const
-    {
-        if (true_ && !arm_->checker()->isValid(*grown_, particle.q))
-        {
-            return true_;
-        }
-        return nullptr;
     }
 
     bool ArmPlanningAdapter::targetConfiguration(const SphereSearchModel::State &start, const ArmTarget &target,

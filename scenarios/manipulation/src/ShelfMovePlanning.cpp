@@ -267,21 +267,18 @@ namespace ropras::scenarios
             sceneOf_ = particle;
             trueScene_ = nullptr;
         }
-        if (trueScene_)
-        {
-            return trueScene_;
-        }
-        const auto &checker = *model_->arm().checker();
-        if (!checker.isValid(*scene_, particle.q))
-        {
-            auto truth = model_->makeScene(particle, false);
-            if (checker.isValid(*truth, particle.q))
-            {
-                trueScene_ = std::move(truth);
-                return trueScene_;
-            }
-        }
         return scene_;
+    }
+
+    std::shared_ptr<const ompl_ext::Environment> ShelfMoveAdapter::trueEnvironment(
+        const ShelfMoveModel::State &particle) const
+    {
+        if (!trueScene_ || std::memcmp(&particle, &sceneOf_, sizeof(particle)) != 0)
+        {
+            environment(particle);
+            trueScene_ = model_->makeScene(particle, false);
+        }
+        return trueScene_;
     }
 
     bool ShelfMoveAdapter::pathToMacroAction(const ShelfMoveModel::State &, const double *waypoints, std::size_t count,

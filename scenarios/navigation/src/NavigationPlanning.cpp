@@ -72,9 +72,8 @@ namespace ropras::scenarios
     }
 
     NavigationPlanningAdapter::NavigationPlanningAdapter(std::shared_ptr<const NavigationModel> model,
-                                                         std::size_t macroLength,
-                                                         std::shared_ptr<const ompl_ext::Environment> tight)
-        : model_(std::move(model)), macroLength_(macroLength), tight_(std::move(tight))
+                                                         std::size_t macroLength)
+        : model_(std::move(model)), macroLength_(macroLength)
     {
         if (macroLength_ == 0)
         {
@@ -171,24 +170,6 @@ namespace ropras::scenarios
         return robot;
     }
 
-    std::shared_ptr<const ompl_ext::Environment> NavigationPlanningAdapter::environment(const NavState &particle) const
-    {
-        const auto &c = model_->config();
-        if (!tight_ || !(c.dangerMargin > 0.0))
-        {
-            return nullptr;
-        }
-        const double grow = c.dangerMargin + c.robotRadius;
-        for (const auto &zone : c.dangerZones)
-        {
-            if (zone.distance(particle.p) <= grow)
-            {
-                return tight_;
-            }
-        }
-        return nullptr;
-    }
-
     std::shared_ptr<const ompl_ext::Environment> navigationEnvironment(const NavigationConfig &config,
                                                                        double dangerMargin)
     {
@@ -245,9 +226,13 @@ namespace ropras::scenarios
                 planner.plannerParams["range"] = std::to_string(range);
             }
             const std::size_t macroLength = params.getCount("macro_length", 15);
-            auto adapter = std::make_shared<const NavigationPlanningAdapter>(model, macroLength, tight);
-            return std::make_unique<pomdp::OmplReferencePolicy<NavigationModel, NavTarget>>(
+            auto adapter = std::make_shared<const NavigationPlanningAdapter>(model, macroLength);
+            auto policy = std::make_unique<pomdp::OmplReferencePolicy<NavigationModel, NavTarget>>(
                 adapter, std::move(heuristic), robot, env, planner);
+            // a particle inside the danger margin (not in the zone: that ends the episode) plans its way out
+            // with the danger zones at their true size instead of failing with an invalid start
+            policy->setTrueEnvironment(tight);
+            return policy;
         };
         parts.world = [model]() -> std::unique_ptr<pomdp::World<NavigationModel>>
         { return std::make_unique<NavigationWorld>(model); };

@@ -57,6 +57,18 @@ namespace ropras::pomdp
             return nullptr;
         }
 
+        /** \brief Optional, the planning margin's fallback, first form: the obstacles of \a particle without
+            the margin its planning environment is grown by. A particle whose configuration is invalid in its
+            planning environment but valid in this one (noise pushed it inside the margin, as after a grasp
+            deep in a shelf) is planned for here instead of failing every plan as an invalid start. Return
+            null (the default) to use the policy's true environment (OmplReferencePolicy::setTrueEnvironment,
+            posed by poseObstacles), or no fallback when it has none. Called only for such starts. */
+        virtual std::shared_ptr<const ompl_ext::Environment> trueEnvironment(const State &particle) const
+        {
+            (void)particle;
+            return nullptr;
+        }
+
         /** \brief Optional, second form: move the objects whose poses \a particle carries in \a working (the
             policy's private copy of its base Environment, Environment::setObjectPose, O(moved primitives))
             and return true; return false (the default) when the particle carries no obstacle poses, then
@@ -98,6 +110,7 @@ namespace ropras::pomdp
             std::size_t noTarget{0};          ///< the heuristic or targetConfiguration() failed
             std::size_t conversionFailed{0};  ///< pathToMacroAction() failed or produced nothing
             std::size_t reused{0};            ///< macros cut from a kept path (PathCache), no plan run
+            std::size_t marginStarts{0};      ///< starts inside the planning margin, planned in the true obstacles
             double seconds{0.0};              ///< wall-clock time in sample()
             std::size_t failed() const { return requested - succeeded; }
         };
@@ -133,6 +146,18 @@ namespace ropras::pomdp
         std::string name() const override { return heuristic_->name() + "+ompl(" + planner_->settings().planner + ")"; }
 
         const Statistics &statistics() const { return statistics_; }
+
+        /** \brief The planning margin's fallback, second form: \a environment is the policy's base Environment
+            without the margin (the same objects, so that poseObstacles poses a private copy of it as it poses
+            the base). A start invalid in its planning environment but valid in its true one (the adapter's
+            trueEnvironment, else this one posed) is planned for in the true one; the plan then keeps no
+            margin from the obstacles near the start (its start is already inside the margin), which beats
+            failing every plan as an invalid start. Null (the default) switches the second form off. */
+        void setTrueEnvironment(std::shared_ptr<const ompl_ext::Environment> environment)
+        {
+            trueBase_ = environment;
+            trueWorking_ = environment ? std::make_shared<ompl_ext::Environment>(*environment) : nullptr;
+        }
 
         /** \brief Opt-in experience reuse (PathCache: "plan once, cut many macro-actions"): before planning,
             a kept path toward the same target configuration that passes within \a settings.radius of the
@@ -170,6 +195,8 @@ namespace ropras::pomdp
                 else
                     planner_->setEnvironment(base_);
                 adapter_->configuration(start, start_.data());
+                if (!planner_->checker().isValid(*planner_->environment(), start_.data()))
+                    planInTrueEnvironment(start);
                 const double *path = nullptr;
                 std::size_t count = 0;
                 if (cache_ &&
@@ -207,10 +234,30 @@ namespace ropras::pomdp
             }
         }
 
+        /// a start inside the planning margin: plan in its true obstacles when the start is valid there
+        void planInTrueEnvironment(const State &start)
+        {
+            std::shared_ptr<const ompl_ext::Environment> truth = adapter_->trueEnvironment(start);
+            if (!truth && trueBase_)
+            {
+                if (adapter_->poseObstacles(start, *trueWorking_))
+                    truth = trueWorking_;
+                else
+                    truth = trueBase_;
+            }
+            if (truth && planner_->checker().isValid(*truth, start_.data()))
+            {
+                planner_->setEnvironment(std::move(truth));
+                ++statistics_.marginStarts;
+            }
+        }
+
         std::shared_ptr<const Adapter> adapter_;
         std::unique_ptr<SamplingHeuristic<State, Target>> heuristic_;
         std::shared_ptr<const ompl_ext::Environment> base_;
         std::shared_ptr<ompl_ext::Environment> working_;
+        std::shared_ptr<const ompl_ext::Environment> trueBase_;
+        std::shared_ptr<ompl_ext::Environment> trueWorking_;
         std::unique_ptr<OmplPathPlanner> planner_;
         std::vector<double> start_, target_, cached_;
         std::unique_ptr<PathCache> cache_;

@@ -127,38 +127,26 @@ namespace ropras::scenarios
         planned path becomes PathToMacroAction "motion path up to a predefined length": the path cut into
         steps of L2 norm <= \a step (discretizeJointPath), the first \a macroLength of them, as joint
         displacements dq (\a waypoints: as the points themselves, ArmAction::waypoint). The sampler is mutable: one
-       adapter per reference policy (one thread).
-
-        With \a trueEnvironment (the obstacles without the planning margin) and \a grownEnvironment (the
-        reference policy's, with it), a particle whose configuration lies inside the margin (valid in the true
-        world, invalid in the grown one: noise pushed it there) is planned for in the true world instead of
-        failing as an invalid start. */
+       adapter per reference policy (one thread). A particle inside the planning margin is planned for in the
+       true world by the reference policy (OmplReferencePolicy::setTrueEnvironment). */
     class ArmPlanningAdapter final : public pomdp::OmplPlanningAdapter<SphereSearchModel::State, ArmAction, ArmTarget>
     {
     public:
         /** \brief Throws ropras::Error for a non-positive step or a macroLength of 0. */
         ArmPlanningAdapter(std::unique_ptr<ArmGoalSampler> sampler, double step, std::size_t macroLength,
-                           bool waypoints = false,
-                           std::shared_ptr<const ompl_ext::Environment> trueEnvironment = nullptr,
-                           std::shared_ptr<const ompl_ext::Environment> grownEnvironment = nullptr,
-                           std::shared_ptr<const PandaArm> arm = nullptr);
+                           bool waypoints = false);
 
         void configuration(const SphereSearchModel::State &state, double *q) const override;
         bool targetConfiguration(const SphereSearchModel::State &start, const ArmTarget &target,
                                  double *q) const override;
         bool pathToMacroAction(const SphereSearchModel::State &start, const double *waypoints, std::size_t count,
                                std::vector<ArmAction> &out) const override;
-        /// the true world for a particle inside the planning margin, else null (the grown world)
-        std::shared_ptr<const ompl_ext::Environment> environment(
-            const SphereSearchModel::State &particle) const override;
 
     private:
         std::unique_ptr<ArmGoalSampler> sampler_;
         double step_;
         std::size_t macroLength_;
         bool waypoints_;
-        std::shared_ptr<const ompl_ext::Environment> true_, grown_;
-        std::shared_ptr<const PandaArm> arm_;
         mutable std::vector<double> points_;
     };
 }  // namespace ropras::scenarios

@@ -91,11 +91,11 @@ namespace ropras::scenarios
     /** \brief The OMPL planning adapter of Shelf-Move: the configuration is the joints; a target's
         configuration comes from ShelfMoveIk in the particle's planning scene (the shelf grown by
         planning.margin, the particle's cans, the held can attached), which is also the scene the planner
-        plans in, except for a particle whose arm lies inside the margin (valid in its true scene, invalid in the
-        grown one, as after a grasp deep in the shelf): it is planned for in its true scene instead of failing as
-        an invalid start; PathToMacroAction "entire motion path": the whole path cut into steps of L2 norm <= step,
-        as joint displacements, the last one carrying Close (grasp targets) or Open (place targets). The IK
-        and the last target are mutable: one adapter per reference policy (one thread). */
+        plans in; its trueEnvironment (the same without the margin) is where the reference policy plans for a
+        particle whose arm lies inside the margin (as after a grasp deep in the shelf); PathToMacroAction "entire motion
+       path": the whole path cut into steps of L2 norm <= step, as joint displacements, the last one carrying Close
+       (grasp targets) or Open (place targets). The IK and the last target are mutable: one adapter per reference policy
+       (one thread). */
     class ShelfMoveAdapter final
         : public pomdp::OmplPlanningAdapter<ShelfMoveModel::State, ShelfMoveAction, ShelfTarget>
     {
@@ -106,6 +106,8 @@ namespace ropras::scenarios
         bool targetConfiguration(const ShelfMoveModel::State &start, const ShelfTarget &target,
                                  double *q) const override;
         std::shared_ptr<const ompl_ext::Environment> environment(const ShelfMoveModel::State &particle) const override;
+        std::shared_ptr<const ompl_ext::Environment> trueEnvironment(
+            const ShelfMoveModel::State &particle) const override;
         bool pathToMacroAction(const ShelfMoveModel::State &start, const double *waypoints, std::size_t count,
                                std::vector<ShelfMoveAction> &out) const override;
 

@@ -47,26 +47,22 @@ namespace ropras::scenarios
         the largest remaining difference to the next point while it exceeds half a step; at most
         macroLength actions.
 
-        Obstacles: the policy's base environment grows the danger zones by danger_margin; a particle that lies
-        inside that margin (not in the zone itself: that would have ended the episode) gets \a tight, the
-        environment with the danger zones at their true size, so it can still plan its way out instead of
-        failing with an invalid start. */
+        Obstacles: the policy's base environment grows the danger zones by danger_margin; the environment with
+        the zones at their true size is the policy's true environment (OmplReferencePolicy::setTrueEnvironment),
+        so a particle inside the margin can still plan its way out. */
     class NavigationPlanningAdapter final : public pomdp::OmplPlanningAdapter<NavState, std::uint8_t, NavTarget>
     {
     public:
-        NavigationPlanningAdapter(std::shared_ptr<const NavigationModel> model, std::size_t macroLength,
-                                  std::shared_ptr<const ompl_ext::Environment> tight = nullptr);
+        NavigationPlanningAdapter(std::shared_ptr<const NavigationModel> model, std::size_t macroLength);
 
         void configuration(const NavState &state, double *q) const override;
         bool targetConfiguration(const NavState &start, const NavTarget &target, double *q) const override;
         bool pathToMacroAction(const NavState &start, const double *waypoints, std::size_t count,
                                std::vector<std::uint8_t> &out) const override;
-        std::shared_ptr<const ompl_ext::Environment> environment(const NavState &particle) const override;
 
     private:
         std::shared_ptr<const NavigationModel> model_;
         std::size_t macroLength_;
-        std::shared_ptr<const ompl_ext::Environment> tight_;
     };
 
     /** \brief The planner's robot: loads scenarios/<folder>/robot.urdf (embedded) and checks that its
