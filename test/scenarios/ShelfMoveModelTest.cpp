@@ -2,6 +2,7 @@
 // hand, blocked steps, observations, and reinvigoration that never makes cans interpenetrate or float.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -148,6 +149,109 @@ namespace ropras::scenarios
             EXPECT_LE((m.endEffector(at) - Eigen::Vector3d(s0.can[k][0], s0.can[k][1], s0.can[k][2])).norm(),
                       m.config().senseDistance);
         }
+    }
+
+    // A can moved out of the way (parked at a slot other than the reserved one) is neither grasped nor sensed again:
+    // right after its release the hand is at it, and 1/distance weights would pick it again and again (an episode
+    // grasped and released can 1 nine times in a row). A can on the reserved slot stays graspable (to clear it).
+    TEST(ShelfMoveModel, ParkedCansAreNoLongerInformative)
+    {
+        const auto &m = *model();
+        const ShelfMoveTargetSpace space(model());
+        const auto targets = [&](const State &s)
+        {
+            std::vector<std::pair<ShelfTarget::Kind, int>> out;
+            for (std::size_t i = 0; i < space.numInformative(s); ++i)
+                out.emplace_back(space.informative(s, i).kind, space.informative(s, i).can);
+            return out;
+        };
+        const auto has = [](const std::vector<std::pair<ShelfTarget::Kind, int>> &t, ShelfTarget::Kind kind, int can)
+        { return std::find(t.begin(), t.end(), std::make_pair(kind, can)) != t.end(); };
+        const State s0 = m.trueInitialState();
+        const auto initial = targets(s0);
+        EXPECT_EQ(initial.size(), 3u + 4u) << "grasp the 3 obstacles, sense the 4 cans";
+        State parked = s0;
+        for (int a = 0; a < 3; ++a)
+        {
+            parked.can[1][a] = m.config().slots[3][static_cast<std::size_t>(a)];
+            parked.can[2][a] = m.config().slots[m.config().reservedSlot][static_cast<std::size_t>(a)];
+        }
+        EXPECT_TRUE(space.parked(parked, 1));
+        EXPECT_FALSE(space.parked(parked, 2)) << "the reserved slot is not a parking place";
+        EXPECT_FALSE(space.parked(parked, 3));
+        const auto after = targets(parked);
+        EXPECT_EQ(after.size(), 2u + 3u);
+        EXPECT_FALSE(has(after, ShelfTarget::Kind::Grasp, 1));
+        EXPECT_FALSE(has(after, ShelfTarget::Kind::Sense, 1));
+        EXPECT_TRUE(has(after, ShelfTarget::Kind::Grasp, 2));
+        EXPECT_TRUE(has(after, ShelfTarget::Kind::Grasp, 3));
+        EXPECT_TRUE(has(after, ShelfTarget::Kind::Sense, 0));
+        EXPECT_FALSE(has(after, ShelfTarget::Kind::Grasp, 0)) << "the target's grasp is the goal, not informative";
+        // a parked can that is held is not parked: holding it, the slots are offered again
+        State holding = parked;
+        holding.held = 1;
+        EXPECT_FALSE(space.parked(holding, 1));
+        EXPECT_EQ(space.numInformative(holding), m.config().slots.size() - 1 + 4u);
+        for (std::size_t i = 0; i < space.numInformative(holding); ++i)
+            if (space.informative(holding, i).kind == ShelfTarget::Kind::Place)
+                EXPECT_NE(space.informative(holding, i).slot, static_cast<int>(m.config().reservedSlot))
+                    << "an obstacle is never offered the target's slot";
+    }
+
+    // The goal chain: while a can blocks the target's grasp, the goal is grasping that can. "Blocks" is a geometric
+    // test (in front, within planning.blocking_halfwidth sideways); it agrees with the IK: the target's grasp has no
+    // solution exactly when a blocker is reported, and the goal grasp has one in every case.
+    TEST(ShelfMoveModel, TheGoalGraspsTheCanThatBlocksTheTargetUntilNoneDoes)
+    {
+        const auto &m = *model();
+        const ShelfMoveTargetSpace space(model());
+        const State s0 = m.trueInitialState();
+        const int target = static_cast<int>(m.config().targetCan);
+        const auto moved = [&](const std::vector<std::pair<std::size_t, std::size_t>> &moves)
+        {
+            State s = s0;
+            for (const auto &[can, slot] : moves)
+                for (int a = 0; a < 3; ++a)
+                    s.can[can][a] = m.config().slots[slot][static_cast<std::size_t>(a)];
+            return s;
+        };
+        struct Case
+        {
+            State state;
+            std::vector<int> blockers;  ///< the cans the goal may grasp first
+        };
+        const std::vector<Case> cases{{s0, {1, 2}},
+                                      {moved({{1, 3}}), {2}},
+                                      {moved({{2, 4}}), {1}},
+                                      {moved({{1, 3}, {2, 4}}), {}},
+                                      {moved({{1, 3}, {2, 0}, {3, 4}}), {}}};
+        for (std::size_t i = 0; i < cases.size(); ++i)
+        {
+            const State &s = cases[i].state;
+            ASSERT_TRUE(m.validState(s)) << i;
+            const int blocker = space.blockingCan(s);
+            const ShelfTarget goal = space.goal(s);
+            EXPECT_EQ(goal.kind, ShelfTarget::Kind::Grasp) << i;
+            double q[ARM_DOF];
+            if (cases[i].blockers.empty())
+            {
+                EXPECT_EQ(blocker, -1) << i;
+                EXPECT_EQ(goal.can, target) << i;
+            }
+            else
+            {
+                EXPECT_NE(std::find(cases[i].blockers.begin(), cases[i].blockers.end(), blocker),
+                          cases[i].blockers.end())
+                    << i << ": blocker " << blocker;
+                EXPECT_EQ(goal.can, blocker) << i;
+                EXPECT_FALSE(solveTarget(s, space.grasp(s, target), q)) << i << ": the target is blocked";
+            }
+            EXPECT_TRUE(solveTarget(s, goal, q)) << i << ": the goal's grasp has an IK solution";
+        }
+        // holding a can, the goal is a slot again
+        State holding = s0;
+        holding.held = 1;
+        EXPECT_EQ(space.goal(holding).kind, ShelfTarget::Kind::Place);
     }
 
     TEST(ShelfMoveModel, GraspAttachesTheCanWhichFollowsTheHandAndPlaceSnapsItOntoTheSlot)
@@ -450,6 +554,11 @@ namespace ropras::scenarios
         j = defaultJson();
         j["reserved_slot"] = 9;
         expectError(j, "reserved_slot", "reserved_slot");
+        j = defaultJson();
+        j["planning"]["blocking_halfwidth"] = -0.1;
+        expectError(j, "blocking_halfwidth", "blocking_halfwidth");
+        j["planning"]["blocking_halfwidth"] = std::nan("");
+        expectError(j, "blocking_halfwidth", "blocking_halfwidth");
         j = defaultJson();
         j["grasp_approach"] = {0, 0, 1};
         expectError(j, "grasp_approach", "horizontal");

@@ -148,7 +148,7 @@ namespace ropras::scenarios
         c.entropyBin = r.within("entropy_bin", 1e-4, 10.0);
         const ConfigReader p = r.sub("planning");
         p.requireKnown({"plan_seconds", "reference_plan_time", "margin", "planner_range", "ik_restarts",
-                        "sense_fraction", "place_lift"});
+                        "sense_fraction", "place_lift", "blocking_halfwidth"});
         c.planSeconds = p.positive("plan_seconds");
         c.referencePlanTime = p.positive("reference_plan_time");
         c.planningMargin = p.within("margin", 0.0, 0.1);
@@ -156,6 +156,7 @@ namespace ropras::scenarios
         c.ikRestarts = p.count("ik_restarts", 0, 10000);
         c.senseFraction = p.within("sense_fraction", 0.0, 1.0);
         c.placeLift = p.within("place_lift", 0.0, 0.1);
+        c.blockingHalfwidth = p.within("blocking_halfwidth", 0.0, 1.0);
         readWorld(r.sub("world"), c);
         const ConfigReader d = r.sub("defaults");
         for (const auto &item : r.at("defaults").items())

@@ -154,7 +154,8 @@ namespace ropras::scenarios
         const int target = static_cast<int>(c.targetCan);
         if (particle.held < 0)
         {
-            return grasp(particle, target);
+            const int blocker = blockingCan(particle);
+            return grasp(particle, blocker >= 0 ? blocker : target);
         }
         if (particle.held == target)
         {
@@ -183,31 +184,99 @@ namespace ropras::scenarios
         return place(best);
     }
 
+    int ShelfMoveTargetSpace::blockingCan(const ShelfMoveModel::State &particle) const noexcept
+    {
+        const auto &c = model_->config();
+        const int target = static_cast<int>(c.targetCan);
+        const Eigen::Vector3d t = centre(particle, target);
+        const Eigen::Vector3d ee = model_->endEffector(particle);
+        int best = -1;
+        double bestDistance = 1e300;
+        for (int k = 0; k < static_cast<int>(SHELF_CANS); ++k)
+        {
+            if (k == target || k == particle.held || parked(particle, k))
+            {
+                continue;
+            }
+            const Eigen::Vector3d p = centre(particle, k);
+            // in front of the target along the approach (+x), on its board, within the hand's reach sideways
+            const bool blocks = p.x() < t.x() && std::abs(p.z() - t.z()) < 0.5 * c.canLength &&
+                                std::abs(p.y() - t.y()) < c.blockingHalfwidth;
+            const double d = (p - ee).norm();
+            if (blocks && d < bestDistance)
+            {
+                best = k;
+                bestDistance = d;
+            }
+        }
+        return best;
+    }
+
+    bool ShelfMoveTargetSpace::parked(const ShelfMoveModel::State &particle, int can) const noexcept
+    {
+        const auto &c = model_->config();
+        if (can == particle.held)
+        {
+            return false;
+        }
+        const Eigen::Vector3d p = centre(particle, can);
+        for (std::size_t slot = 0; slot < c.slots.size(); ++slot)
+        {
+            const auto &at = c.slots[slot];
+            if (slot != c.reservedSlot && (p - Eigen::Vector3d(at[0], at[1], at[2])).norm() <= c.placeTolerance)
+            {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    std::size_t ShelfMoveTargetSpace::activeCans(const ShelfMoveModel::State &particle, bool obstacles,
+                                                 int *out) const noexcept
+    {
+        std::size_t n = 0;
+        for (int k = 0; k < static_cast<int>(SHELF_CANS); ++k)
+        {
+            if ((!obstacles || k != static_cast<int>(model_->config().targetCan)) && !parked(particle, k))
+            {
+                out[n++] = k;
+            }
+        }
+        return n;
+    }
+
     std::size_t ShelfMoveTargetSpace::numInformative(const ShelfMoveModel::State &particle) const
     {
-        const std::size_t slots = model_->config().slots.size();
+        int cans[SHELF_CANS];
+        const std::size_t sensed = activeCans(particle, false, cans);
         if (particle.held < 0)
         {
-            return (SHELF_CANS - 1) + SHELF_CANS;
+            return activeCans(particle, true, cans) + sensed;
         }
-        // holding the target: the other slots; holding another can: all slots (the goal is one of them)
-        return (particle.held == static_cast<int>(model_->config().targetCan) ? slots - 1 : slots) + SHELF_CANS;
+        // holding a can: every slot but the reserved one (the target's goal; an obstacle there would block it)
+        return (model_->config().slots.size() - 1) + sensed;
     }
 
     ShelfTarget ShelfMoveTargetSpace::informative(const ShelfMoveModel::State &particle, std::size_t i) const
     {
-        const int target = static_cast<int>(model_->config().targetCan);
         const std::size_t n = numInformative(particle);
-        i %= n;
-        if (i >= n - SHELF_CANS)
+        if (n == 0)
         {
-            return sense(particle, static_cast<int>(i - (n - SHELF_CANS)));
+            return goal(particle);
+        }
+        i %= n;
+        int cans[SHELF_CANS];
+        const std::size_t sensed = activeCans(particle, false, cans);
+        if (i >= n - sensed)
+        {
+            return sense(particle, cans[i - (n - sensed)]);
         }
         if (particle.held < 0)
         {
-            return grasp(particle, static_cast<int>(i) < target ? static_cast<int>(i) : static_cast<int>(i) + 1);
+            activeCans(particle, true, cans);
+            return grasp(particle, cans[i]);
         }
-        return place(particle.held == target ? static_cast<int>(otherSlot(i)) : static_cast<int>(i));
+        return place(static_cast<int>(otherSlot(i)));
     }
 
     double ShelfMoveTargetSpace::distance(const ShelfMoveModel::State &agent, const ShelfTarget &target) const

@@ -64,6 +64,8 @@ namespace ropras::scenarios
         double plannerRange{0.5};        ///< "planning.planner_range": VectorizedRRTConnect range (rad)
         std::size_t ikRestarts{8};       ///< "planning.ik_restarts": IK random restarts per target
         double senseFraction{0.7};       ///< "planning.sense_fraction": sensing points at this share of sense_distance
+        double blockingHalfwidth{0.13};  ///< "planning.blocking_halfwidth": a can in front of the target within this
+                                         ///< lateral distance blocks its grasp (the hand's half-width + a can radius)
         double placeLift{0.005};         ///< "planning.place_lift": release this far above the slot centre
         // "world": what really happens (ShelfMoveWorld, Bullet rigid-body dynamics) or the model as its own world
         bool bulletWorld{true};           ///< "world.type": "bullet" (default) or "model"

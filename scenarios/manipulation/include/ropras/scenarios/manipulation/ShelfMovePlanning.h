@@ -61,11 +61,15 @@ namespace ropras::scenarios
     };
 
     /** \brief The informative states of Shelf-Move, conditioned on what the particle holds. Holding
-        nothing: the goal is grasping the target can; the others are grasping each other can and sensing
-        each can. Holding the target: the goal is placing it on the reserved slot; the others are the other
-        slots and sensing. Holding another can: the goal is the free slot (not the reserved one) nearest to
-        the hand; the others are every other slot and sensing. Distance: the end effector's to the target's
-        point. Entropy bins: the x, y cells (entropy_bin) of the cans not held (H normalised by log N). */
+        nothing: the goal is grasping the target can, or, while a can blocks its grasp (blockingCan), grasping
+        that can (the goal chain: "grasp the target if it is reachable"); the others are grasping each other can and
+       sensing each can. Holding the target: the goal is placing it on the reserved slot; the others are the other slots
+       and sensing. Holding another can: the goal is the free slot (not the reserved one) nearest to the hand; the
+       others are the slots but the reserved one (an obstacle there would block the goal) and sensing. A can parked at a
+       slot other than the reserved one (within place_tolerance: moved out of the way) is neither grasped nor sensed
+       again: right after a release the hand is at it, so the 1/distance weights would otherwise pick it again and
+       again. Distance: the end effector's to the target's point. Entropy bins: the x, y cells (entropy_bin) of the cans
+       not held (H normalised by log N). */
     class ShelfMoveTargetSpace final : public pomdp::TargetSpace<ShelfMoveModel::State, ShelfTarget>
     {
     public:
@@ -82,9 +86,18 @@ namespace ropras::scenarios
         ShelfTarget sense(const ShelfMoveModel::State &particle, int can) const;
         ShelfTarget place(int slot) const;
 
+        /** \brief The goal chain's first link: the can (not held, not parked) that stands in front of the target
+            (smaller x, on its board, within planning.blocking_halfwidth sideways) nearest to the hand, whose
+            grasp is then the goal; -1 when the target's grasp is not blocked. */
+        int blockingCan(const ShelfMoveModel::State &particle) const noexcept;
+        /// can \a can (not held) stands within place_tolerance of a slot other than the reserved one
+        bool parked(const ShelfMoveModel::State &particle, int can) const noexcept;
+
     private:
         /// the slots offered when holding: every slot but the reserved one
         std::size_t otherSlot(std::size_t i) const;
+        /// the cans not parked (\a obstacles: and not the target), in index order, written to \a out
+        std::size_t activeCans(const ShelfMoveModel::State &particle, bool obstacles, int *out) const noexcept;
         std::shared_ptr<const ShelfMoveModel> model_;
     };
 
