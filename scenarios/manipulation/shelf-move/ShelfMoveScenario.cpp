@@ -6,6 +6,7 @@
 #include "BuiltinScenarios.h"
 #include "ropras/pomdp/OmplReferencePolicy.h"
 #include "ropras/scenarios/manipulation/ShelfMovePlanning.h"
+#include "ropras/scenarios/manipulation/ShelfMoveRecovery.h"
 #include "ropras/scenarios/manipulation/ShelfMoveWorld.h"
 
 namespace ropras::scenarios
@@ -125,6 +126,11 @@ namespace ropras::scenarios
             return std::make_unique<pomdp::OmplReferencePolicy<ShelfMoveModel, ShelfTarget>>(
                 adapter, std::move(heuristic), model->arm().robot(), model->shelf(), planner);
         };
+        if (config.repairOnDepletion)
+        {
+            parts.recovery = []() -> std::unique_ptr<pomdp::DepletionRecovery<ShelfMoveModel>>
+            { return std::make_unique<ShelfMoveRecovery>(); };
+        }
         parts.world = [model]() -> std::unique_ptr<pomdp::World<ShelfMoveModel>>
         {
             if (model->config().bulletWorld)

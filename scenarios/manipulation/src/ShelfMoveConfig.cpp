@@ -39,6 +39,7 @@ namespace ropras::scenarios
     {
         const ConfigReader r(scenario, json);
         r.requireKnown({"start",
+                        "depletion_recovery",
                         "end_effector",
                         "shelf",
                         "can_radius",
@@ -131,6 +132,7 @@ namespace ropras::scenarios
         c.step = r.within("step", 1e-4, 1.0);
         const std::string mode = r.choice("action_mode", {"delta", "waypoint"});
         c.waypointActions = mode == "waypoint";
+        c.repairOnDepletion = r.choice("depletion_recovery", {"repair", "ignore"}) == "repair";
         c.transitionSigma = r.within("transition_sigma", 0.0, 1.0);
         c.observationSigma = r.within("observation_sigma", 1e-5, 1.0);
         c.initialSigma = r.within("initial_sigma", 0.0, 1.0);

@@ -60,6 +60,8 @@ namespace ropras::scenarios
         /// optional: the sensor rays of a state ([origin, end] segments), recorded per step as the recording's
         /// "rays" ({"step", "segments"}; drawn by `ropras view`)
         std::function<void(const State &, std::vector<std::array<Point3, 2>> &)> rays;
+        /// optional: the episode filter's depletion recovery (empty = pomdp::IgnoreObservationRecovery)
+        std::function<std::unique_ptr<pomdp::DepletionRecovery<M>>()> recovery;
         /// solver and filter parameter defaults of this scenario (the user's --param values override them)
         std::map<std::string, double> defaults;
         std::size_t horizon{100};
@@ -314,7 +316,7 @@ namespace ropras::scenarios
         {
             pomdp::Rng rng(seed);
             auto parts = build(settings, rng);
-            pomdp::ParticleFilter<M> filter(parts_.model, parts.filter);
+            pomdp::ParticleFilter<M> filter(parts_.model, parts.filter, parts_.recovery ? parts_.recovery() : nullptr);
             filter.initialize(rng);
             auto world = parts_.world();
             pomdp::EpisodeSettings episode;
