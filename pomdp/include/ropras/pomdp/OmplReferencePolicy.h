@@ -149,8 +149,9 @@ namespace ropras::pomdp
 
         /** \brief The planning margin's fallback, second form: \a environment is the policy's base Environment
             without the margin (the same objects, so that poseObstacles poses a private copy of it as it poses
-            the base). A start invalid in its planning environment but valid in its true one (the adapter's
-            trueEnvironment, else this one posed) is planned for in the true one; the plan then keeps no
+            the base). A start the planner rejects (PathPlanStatus::InvalidStart) in its planning environment
+            but valid in its true one (the adapter's trueEnvironment, else this one posed) is planned for again
+            in the true one; the plan then keeps no
             margin from the obstacles near the start (its start is already inside the margin), which beats
             failing every plan as an invalid start. Null (the default) switches the second form off. */
         void setTrueEnvironment(std::shared_ptr<const ompl_ext::Environment> environment)
@@ -195,8 +196,6 @@ namespace ropras::pomdp
                 else
                     planner_->setEnvironment(base_);
                 adapter_->configuration(start, start_.data());
-                if (!planner_->checker().isValid(*planner_->environment(), start_.data()))
-                    planInTrueEnvironment(start);
                 const double *path = nullptr;
                 std::size_t count = 0;
                 if (cache_ &&
@@ -210,6 +209,9 @@ namespace ropras::pomdp
                 else
                 {
                     lastStatus_ = planner_->plan(start_.data(), target_.data());
+                    // the planner rejects a start inside the planning margin: plan again in the true obstacles
+                    if (lastStatus_ == PathPlanStatus::InvalidStart && useTrueEnvironment(start))
+                        lastStatus_ = planner_->plan(start_.data(), target_.data());
                     if (lastStatus_ != PathPlanStatus::Solved)
                         return false;
                     path = planner_->path().data();
@@ -234,8 +236,8 @@ namespace ropras::pomdp
             }
         }
 
-        /// a start inside the planning margin: plan in its true obstacles when the start is valid there
-        void planInTrueEnvironment(const State &start)
+        /// a start the planning obstacles reject: install its true obstacles when the start is valid there
+        bool useTrueEnvironment(const State &start)
         {
             std::shared_ptr<const ompl_ext::Environment> truth = adapter_->trueEnvironment(start);
             if (!truth && trueBase_)
@@ -245,11 +247,11 @@ namespace ropras::pomdp
                 else
                     truth = trueBase_;
             }
-            if (truth && planner_->checker().isValid(*truth, start_.data()))
-            {
-                planner_->setEnvironment(std::move(truth));
-                ++statistics_.marginStarts;
-            }
+            if (!truth || !planner_->checker().isValid(*truth, start_.data()))
+                return false;
+            planner_->setEnvironment(std::move(truth));
+            ++statistics_.marginStarts;
+            return true;
         }
 
         std::shared_ptr<const Adapter> adapter_;
