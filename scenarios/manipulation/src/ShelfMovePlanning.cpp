@@ -231,52 +231,53 @@ namespace ropras::scenarios
         return false;
     }
 
-    std::size_t ShelfMoveTargetSpace::activeCans(const ShelfMoveModel::State &particle, bool obstacles,
-                                                 int *out) const noexcept
+    ShelfMoveTargetSpace::Candidates ShelfMoveTargetSpace::candidates(
+        const ShelfMoveModel::State &particle) const noexcept
     {
-        std::size_t n = 0;
+        Candidates c;
+        const int target = static_cast<int>(model_->config().targetCan);
         for (int k = 0; k < static_cast<int>(SHELF_CANS); ++k)
         {
-            if ((!obstacles || k != static_cast<int>(model_->config().targetCan)) && !parked(particle, k))
+            if (parked(particle, k))
             {
-                out[n++] = k;
+                continue;
+            }
+            c.sensed[c.numSensed++] = k;
+            if (k != target && particle.held < 0)
+            {
+                c.grasped[c.numGrasped++] = k;
             }
         }
-        return n;
+        // holding a can: every slot but the reserved one (the target's goal; an obstacle there would block it)
+        c.numPlaced = particle.held < 0 ? 0 : model_->config().slots.size() - 1;
+        return c;
     }
 
     std::size_t ShelfMoveTargetSpace::numInformative(const ShelfMoveModel::State &particle) const
     {
-        int cans[SHELF_CANS];
-        const std::size_t sensed = activeCans(particle, false, cans);
-        if (particle.held < 0)
-        {
-            return activeCans(particle, true, cans) + sensed;
-        }
-        // holding a can: every slot but the reserved one (the target's goal; an obstacle there would block it)
-        return (model_->config().slots.size() - 1) + sensed;
+        const Candidates c = candidates(particle);
+        return c.numGrasped + c.numPlaced + c.numSensed;
     }
 
     ShelfTarget ShelfMoveTargetSpace::informative(const ShelfMoveModel::State &particle, std::size_t i) const
     {
-        const std::size_t n = numInformative(particle);
+        const Candidates c = candidates(particle);
+        const std::size_t n = c.numGrasped + c.numPlaced + c.numSensed;
         if (n == 0)
         {
             return goal(particle);
         }
         i %= n;
-        int cans[SHELF_CANS];
-        const std::size_t sensed = activeCans(particle, false, cans);
-        if (i >= n - sensed)
+        if (i < c.numGrasped)
         {
-            return sense(particle, cans[i - (n - sensed)]);
+            return grasp(particle, c.grasped[i]);
         }
-        if (particle.held < 0)
+        i -= c.numGrasped;
+        if (i < c.numPlaced)
         {
-            activeCans(particle, true, cans);
-            return grasp(particle, cans[i]);
+            return place(static_cast<int>(otherSlot(i)));
         }
-        return place(static_cast<int>(otherSlot(i)));
+        return sense(particle, c.sensed[i - c.numPlaced]);
     }
 
     double ShelfMoveTargetSpace::distance(const ShelfMoveModel::State &agent, const ShelfTarget &target) const
@@ -320,15 +321,12 @@ namespace ropras::scenarios
     bool ShelfMoveAdapter::targetConfiguration(const ShelfMoveModel::State &start, const ShelfTarget &target,
                                                double *q) const
     {
-        scene_ = model_->makeScene(start, true);
-        sceneOf_ = start;
-        trueScene_ = nullptr;
+        select(start);
         last_ = target;
         return ik_->solve(start, target, *scene_, q);
     }
 
-    std::shared_ptr<const ompl_ext::Environment> ShelfMoveAdapter::environment(
-        const ShelfMoveModel::State &particle) const
+    void ShelfMoveAdapter::select(const ShelfMoveModel::State &particle) const
     {
         if (!scene_ || std::memcmp(&particle, &sceneOf_, sizeof(particle)) != 0)
         {
@@ -336,15 +334,21 @@ namespace ropras::scenarios
             sceneOf_ = particle;
             trueScene_ = nullptr;
         }
+    }
+
+    std::shared_ptr<const ompl_ext::Environment> ShelfMoveAdapter::environment(
+        const ShelfMoveModel::State &particle) const
+    {
+        select(particle);
         return scene_;
     }
 
     std::shared_ptr<const ompl_ext::Environment> ShelfMoveAdapter::trueEnvironment(
         const ShelfMoveModel::State &particle) const
     {
-        if (!trueScene_ || std::memcmp(&particle, &sceneOf_, sizeof(particle)) != 0)
+        select(particle);
+        if (!trueScene_)
         {
-            environment(particle);
             trueScene_ = model_->makeScene(particle, false);
         }
         return trueScene_;

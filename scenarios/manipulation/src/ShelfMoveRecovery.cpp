@@ -6,8 +6,8 @@
 namespace ropras::scenarios
 {
     bool ShelfMoveRecovery::repair(const ShelfMoveModel &model, const ShelfMoveModel::Action &a,
-                                   const ShelfMoveModel::Observation &o, ShelfMoveModel::State &s,
-                                   pomdp::Rng &rng) noexcept
+                                   const ShelfMoveModel::Observation &o, ShelfMoveModel::State &s, pomdp::Rng &rng,
+                                   double *likelihood) noexcept
     {
         const double w = model.config().canObservationNoise;
         bool haveValid = false;
@@ -43,9 +43,12 @@ namespace ropras::scenarios
                 {
                     continue;
                 }
-                if (model.observationProbability(o, r, a) > 0.0)
+                const double z = model.observationProbability(o, r, a);
+                if (z > 0.0)
                 {
                     s = r;
+                    if (likelihood)
+                        *likelihood = z;
                     return true;
                 }
                 if (!haveValid)
@@ -58,6 +61,8 @@ namespace ropras::scenarios
         if (haveValid)
         {
             s = firstValid;
+            if (likelihood)
+                *likelihood = 0.0;  // no valid candidate explains the observation
         }
         return haveValid;
     }
@@ -69,8 +74,11 @@ namespace ropras::scenarios
         weights.resize(particles.size());
         for (std::size_t i = 0; i < particles.size(); ++i)
         {
-            repair(model, a, o, particles[i], rng);
-            const double z = model.observationProbability(o, particles[i], a);
+            double z = 0.0;
+            if (!repair(model, a, o, particles[i], rng, &z))
+            {
+                z = model.observationProbability(o, particles[i], a);  // kept as it was
+            }
             weights[i] = std::isfinite(z) && z > 0.0 ? z : 0.0;
         }
     }

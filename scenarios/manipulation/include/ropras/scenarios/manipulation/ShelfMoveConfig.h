@@ -33,17 +33,16 @@ namespace ropras::scenarios
         std::vector<std::array<double, 3>> slots;              ///< "slots": can centres where a release lands
         std::size_t reservedSlot{1};                           ///< "reserved_slot": the target's slot (index)
         std::array<double, 3> approach{{1.0, 0.0, 0.0}};       ///< "grasp_approach": world approach axis
-        double graspOffset{0.015};          ///< "grasp_offset": the can's axis this far beyond the EE along its z
-        double graspTolerance{0.02};        ///< "grasp_tolerance": EE to the can's axis for a grasp
-        double graspAxisTolerance{0.2};     ///< "grasp_axis_tolerance": EE x axis to vertical (rad)
-        double placeTolerance{0.04};        ///< "place_tolerance": held can centre to a slot centre
-        double senseDistance{0.15};         ///< "sense_distance": EE to a can centre for a detection
-        double canObservationNoise{0.04};   ///< "can_observation_noise": U(-w, w) per axis
-        double observationSoftening{0.01};  ///< "observation_softening": Gaussian tail outside the box (m)
-        double step{0.1};                   ///< "step": L2 norm of a primitive dq
-        bool waypointActions{true};         ///< "action_mode": "waypoint" (true) or "delta"
-        bool repairOnDepletion{
-            true};  ///< "depletion_recovery": "repair" (ShelfMoveRecovery) or "ignore" the observation
+        double graspOffset{0.015};            ///< "grasp_offset": the can's axis this far beyond the EE along its z
+        double graspTolerance{0.02};          ///< "grasp_tolerance": EE to the can's axis for a grasp
+        double graspAxisTolerance{0.2};       ///< "grasp_axis_tolerance": EE x axis to vertical (rad)
+        double placeTolerance{0.04};          ///< "place_tolerance": held can centre to a slot centre
+        double senseDistance{0.15};           ///< "sense_distance": EE to a can centre for a detection
+        double canObservationNoise{0.04};     ///< "can_observation_noise": U(-w, w) per axis
+        double observationSoftening{0.01};    ///< "observation_softening": Gaussian tail outside the box (m)
+        double step{0.1};                     ///< "step": L2 norm of a primitive dq
+        bool waypointActions{true};           ///< "action_mode": "waypoint" (true) or "delta"
+        bool repairOnDepletion{true};         ///< "depletion_recovery": "repair" (ShelfMoveRecovery) or "ignore"
         double transitionSigma{0.001};        ///< "transition_sigma": N(0, s) per joint and step
         double observationSigma{0.02};        ///< "observation_sigma": N(0, s) per observed joint
         double initialSigma{0.001};           ///< "initial_sigma": joints in b0

@@ -96,8 +96,14 @@ namespace ropras::scenarios
     private:
         /// the slots offered when holding: every slot but the reserved one
         std::size_t otherSlot(std::size_t i) const;
-        /// the cans not parked (\a obstacles: and not the target), in index order, written to \a out
-        std::size_t activeCans(const ShelfMoveModel::State &particle, bool obstacles, int *out) const noexcept;
+        /// the informative states of a particle, in order: grasps, placements (other slots), sensing
+        struct Candidates
+        {
+            int grasped[SHELF_CANS]{};  ///< holding nothing: the obstacles not parked
+            int sensed[SHELF_CANS]{};   ///< the cans not parked
+            std::size_t numGrasped{0}, numPlaced{0}, numSensed{0};
+        };
+        Candidates candidates(const ShelfMoveModel::State &particle) const noexcept;
         std::shared_ptr<const ShelfMoveModel> model_;
     };
 
@@ -130,7 +136,9 @@ namespace ropras::scenarios
         mutable ShelfTarget last_{};
         mutable std::shared_ptr<ompl_ext::Environment> scene_;
         mutable ShelfMoveModel::State sceneOf_{};
-        mutable std::shared_ptr<const ompl_ext::Environment> trueScene_;  ///< of sceneOf_, when planned in it
+        mutable std::shared_ptr<const ompl_ext::Environment> trueScene_;  ///< of sceneOf_, made when asked for
+        /// makes scene_ the planning scene of \a particle (kept while the particle is the same)
+        void select(const ShelfMoveModel::State &particle) const;
         mutable std::vector<double> points_;
     };
 }  // namespace ropras::scenarios

@@ -34,9 +34,11 @@ namespace ropras::scenarios
         /// draws of the detected cans' positions tried before the repair keeps them where they are
         static constexpr int DETECTION_DRAWS = 8;
 
-        /// the repair of one particle (true when a valid candidate was applied to \a s)
+        /// the repair of one particle (true when a valid candidate was applied to \a s); \a likelihood (if
+        /// non-null) gets Z(o | repaired s), 0 when no valid candidate explains \a o (left unset otherwise)
         static bool repair(const ShelfMoveModel &model, const ShelfMoveModel::Action &a,
-                           const ShelfMoveModel::Observation &o, ShelfMoveModel::State &s, pomdp::Rng &rng) noexcept;
+                           const ShelfMoveModel::Observation &o, ShelfMoveModel::State &s, pomdp::Rng &rng,
+                           double *likelihood = nullptr) noexcept;
     };
 }  // namespace ropras::scenarios
 
