@@ -194,8 +194,10 @@ namespace ropras::scenarios
         EXPECT_EQ(space.numInformative(holding), m.config().slots.size() - 1 + 4u);
         for (std::size_t i = 0; i < space.numInformative(holding); ++i)
             if (space.informative(holding, i).kind == ShelfTarget::Kind::Place)
+            {
                 EXPECT_NE(space.informative(holding, i).slot, static_cast<int>(m.config().reservedSlot))
                     << "an obstacle is never offered the target's slot";
+            }
     }
 
     // The goal chain: while a can blocks the target's grasp, the goal is grasping that can. "Blocks" is a geometric

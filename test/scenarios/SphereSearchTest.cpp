@@ -494,7 +494,9 @@ namespace ropras::scenarios
                 EXPECT_NE(ompl->lastStatus(), pomdp::PathPlanStatus::InvalidStart);
                 planned += ok ? 1 : 0;
                 if (ok)
+                {
                     EXPECT_EQ(ompl->planner().environment(), model.environment()) << "planned in the true cage";
+                }
             }
             else
             {

@@ -194,20 +194,15 @@ namespace ropras::ompl_ext
         }
     }
 
-    const ObstacleTree *ObstacleIndex::tree(const Environment &env) const noexcept
+    const ObstacleTree *ObstacleIndex::buildTree(const Environment &env) const noexcept
     {
-        if (!state_)
-            return nullptr;
         State &s = *state_;
-        if (!s.fresh.load(std::memory_order_acquire))
+        const std::lock_guard<std::mutex> lock(s.mutex);
+        if (!s.fresh.load(std::memory_order_relaxed))
         {
-            const std::lock_guard<std::mutex> lock(s.mutex);
-            if (!s.fresh.load(std::memory_order_relaxed))
-            {
-                build(env, s.tree);
-                s.refits = 0;
-                s.fresh.store(true, std::memory_order_release);
-            }
+            build(env, s.tree);
+            s.refits = 0;
+            s.fresh.store(true, std::memory_order_release);
         }
         return &s.tree;
     }

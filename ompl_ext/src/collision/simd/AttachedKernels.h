@@ -105,12 +105,17 @@ namespace ropras::ompl_ext::simd
         {
             const V bx = V::broadcast(bound[0]), by = V::broadcast(bound[1]), bz = V::broadcast(bound[2]);
             const V rr = V::broadcast(a.br * a.br);
+            // the spheres are placed for the first obstacle whose box the bound touches (most checks meet none)
             V x0, y0, z0;
-            placeChunk(m, a, 0, x0, y0, z0);
-            const V r0 = V::load(a.r.data());
+            bool placed0 = false;
             const auto survivor = [&](const Environment &e, const PrimitiveRef &ref)
             {
-                if (hitPrimitive(e, ref, x0, y0, z0, r0))
+                if (!placed0)
+                {
+                    placeChunk(m, a, 0, x0, y0, z0);
+                    placed0 = true;
+                }
+                if (hitPrimitive(e, ref, x0, y0, z0, V::load(a.r.data())))
                     return true;
                 for (std::size_t s = WIDTH; s < a.x.size(); s += WIDTH)
                 {
@@ -159,11 +164,11 @@ namespace ropras::ompl_ext::simd
             return false;
         }
 
-        /// one chunk of placed body spheres (n real ones) against the robot links the body may touch: link bounds
-        /// WIDTH at a time against the body's bound, then the link's spheres against each body sphere
+        /// the body (carried by frame \a m) against the robot links it may not touch: link bounds WIDTH at a time
+        /// against the body's bound, then, for a link that reaches it, the body's spheres (placed a chunk at a time)
+        /// against each of the link's spheres
         static bool robotSingle(const KinematicProgram &p, const AttachedSpheres &a, float *buf, Placed &placed,
-                                const float *bound, const float *cx, const float *cy, const float *cz, const float *cr,
-                                int n) noexcept
+                                const float *m, const float *bound) noexcept
         {
             const ScratchLayout &l = p.single;
             const float *lx = buf + l.lx, *ly = buf + l.ly, *lz = buf + l.lz;
@@ -176,49 +181,35 @@ namespace ropras::ompl_ext::simd
                 unsigned bits = cmpLe(fma(dx, dx, fma(dy, dy, dz * dz)), rr * rr).bits();
                 if (bits == 0u)
                     continue;
-                // the links it may touch and those of its own frame (always near it) leave without a branch each
-                const int end = std::min<int>(WIDTH, static_cast<int>(p.links.size()) - c);
-                unsigned skip = 0u;
-                for (int k = 0; k < end; ++k)
-                    skip |= static_cast<unsigned>(a.skipLink[static_cast<std::size_t>(
-                                                      p.links[static_cast<std::size_t>(c + k)].collisionLink)] != 0)
-                            << k;
-                bits &= ~skip;
                 while (bits != 0u)
                 {
                     const int li = c + __builtin_ctz(bits);
                     bits &= bits - 1u;
                     const LinkOp &link = p.links[static_cast<std::size_t>(li)];
+                    if (a.skipLink[static_cast<std::size_t>(link.collisionLink)] != 0)
+                        continue;
                     K::ensure(p, buf, placed, li);
-                    const V sx = V::load(buf + l.sx + link.first), sy = V::load(buf + l.sy + link.first),
-                            sz = V::load(buf + l.sz + link.first), sr = V::load(p.sr.data() + link.first);
-                    for (int j = 0; j < n; ++j)
-                        if (boundTest(sx, sy, sz, sr, cx[j], cy[j], cz[j], cr[j]).bits() != 0u)
-                            return true;
+                    for (std::size_t s = 0; s < a.x.size(); s += WIDTH)
+                    {
+                        V x, y, z;
+                        placeChunk(m, a, s, x, y, z);
+                        const V r = V::load(a.r.data() + s);
+                        for (int k = link.first; k < link.first + link.count; ++k)
+                            if (boundTest(x, y, z, r, buf[l.sx + k], buf[l.sy + k], buf[l.sz + k],
+                                          p.sr[static_cast<std::size_t>(k)])
+                                    .bits() != 0u)
+                                return true;
+                    }
                 }
             }
             return false;
         }
 
-        /// the body against the obstacles, then (placed one chunk of WIDTH spheres at a time) against the robot
+        /// the body against the obstacles, then against the robot
         static bool bodySingle(const KinematicProgram &p, const Environment &env, const AttachedSpheres &a, float *buf,
                                Placed &placed, const float *m, const float *bound) noexcept
         {
-            if (obstaclesSingle(env, a, m, bound))
-                return true;
-            for (std::size_t s = 0; s < a.x.size(); s += WIDTH)
-            {
-                V x, y, z;
-                placeChunk(m, a, s, x, y, z);
-                float cx[WIDTH], cy[WIDTH], cz[WIDTH];
-                x.store(cx);
-                y.store(cy);
-                z.store(cz);
-                const int n = std::min<int>(WIDTH, a.count - static_cast<int>(s));
-                if (robotSingle(p, a, buf, placed, bound, cx, cy, cz, a.r.data() + s, n))
-                    return true;
-            }
-            return false;
+            return obstaclesSingle(env, a, m, bound) || robotSingle(p, a, buf, placed, m, bound);
         }
 
         /// two bodies carried by different frames

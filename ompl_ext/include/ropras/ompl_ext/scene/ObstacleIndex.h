@@ -66,7 +66,12 @@ namespace ropras::ompl_ext
 
         /** \brief The tree over \a env's primitives (built now if stale), or nullptr when \a env has fewer than
             MIN_PRIMITIVES primitives. \a env must be the Environment that owns this index. */
-        const ObstacleTree *tree(const Environment &env) const noexcept;
+        const ObstacleTree *tree(const Environment &env) const noexcept
+        {
+            if (!state_)
+                return nullptr;
+            return state_->fresh.load(std::memory_order_acquire) ? &state_->tree : buildTree(env);
+        }
 
     private:
         struct State
@@ -78,6 +83,8 @@ namespace ropras::ompl_ext
         };
         /// the state, first copied when another Environment shares it
         State &own();
+        /// tree() of a stale tree: builds it under the lock
+        const ObstacleTree *buildTree(const Environment &env) const noexcept;
         static void build(const Environment &env, ObstacleTree &tree) noexcept;
         std::shared_ptr<State> state_;  ///< null: no tree (fewer than MIN_PRIMITIVES primitives)
     };
