@@ -124,6 +124,11 @@ TEST(AttachedBodyTest, CompilesSpheresThatCoverTheShapesInTheLinkFrame)
         const std::string &name = robot->collisionLinks()[c].name;
         EXPECT_EQ(a.mayTouch[c] != 0, name == "tool_link" || name == "wrist_3_link") << name;
     }
+    // the kernels skip the links of the body's own frame with one compare; touch links elsewhere are flagged
+    const int wrist3 = robot->links()[static_cast<std::size_t>(robot->linkIndex("wrist_3_link"))].frame;
+    EXPECT_EQ(a.touchesOtherFrames, wrist3 != a.frame);
+    EXPECT_FALSE(compileAttachedBody(robot, can("alone", "tool_link")).touchesOtherFrames);
+    EXPECT_TRUE(compileAttachedBody(robot, can("leaning", "tool_link", {"forearm_link"})).touchesOtherFrames);
 }
 
 TEST(AttachedBodyTest, ObstacleAtTheHeldBodyMakesTheConfigurationInvalidUntilDetached)

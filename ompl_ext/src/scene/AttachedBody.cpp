@@ -138,6 +138,9 @@ namespace ropras::ompl_ext
         // links of the body's own frame never move relative to it: decide their contact once, in double
         out.skipLink = out.mayTouch;
         for (std::size_t c = 0; c < robot->collisionLinks().size(); ++c)
+            if (out.mayTouch[c] != 0 && robot->collisionLinks()[c].frame != out.frame)
+                out.touchesOtherFrames = true;
+        for (std::size_t c = 0; c < robot->collisionLinks().size(); ++c)
         {
             const CollisionLink &cl = robot->collisionLinks()[c];
             if (cl.frame != out.frame)

@@ -173,20 +173,21 @@ namespace ropras::ompl_ext::simd
             const ScratchLayout &l = p.single;
             const float *lx = buf + l.lx, *ly = buf + l.ly, *lz = buf + l.lz;
             const V bx = V::broadcast(bound[0]), by = V::broadcast(bound[1]), bz = V::broadcast(bound[2]);
-            const V br = V::broadcast(a.br);
+            const V br = V::broadcast(a.br), frame = V::broadcast(static_cast<float>(a.frame));
             for (int c = 0; c < p.linkPadded; c += WIDTH)
             {
                 const V dx = V::load(lx + c) - bx, dy = V::load(ly + c) - by, dz = V::load(lz + c) - bz;
                 const V rr = V::load(p.linkRadius.data() + c) + br;
-                unsigned bits = cmpLe(fma(dx, dx, fma(dy, dy, dz * dz)), rr * rr).bits();
-                if (bits == 0u)
-                    continue;
+                // the links of the body's own frame (their contact never changes, see alwaysCollides) leave with
+                // one compare; the links it may touch on other frames one by one
+                const Mask own = cmpLe(abs(V::load(p.linkFrame.data() + c) - frame), V::broadcast(0.25f));
+                unsigned bits = cmpLe(fma(dx, dx, fma(dy, dy, dz * dz)), rr * rr).bits() & ~own.bits();
                 while (bits != 0u)
                 {
                     const int li = c + __builtin_ctz(bits);
                     bits &= bits - 1u;
                     const LinkOp &link = p.links[static_cast<std::size_t>(li)];
-                    if (a.skipLink[static_cast<std::size_t>(link.collisionLink)] != 0)
+                    if (a.touchesOtherFrames && a.skipLink[static_cast<std::size_t>(link.collisionLink)] != 0)
                         continue;
                     K::ensure(p, buf, placed, li);
                     for (std::size_t s = 0; s < a.x.size(); s += WIDTH)

@@ -125,6 +125,9 @@ namespace ropras::ompl_ext::simd
         std::vector<int> sphereOfSlot;
         /// link bound radii padded to a multiple of WIDTH with 0
         std::vector<float> linkRadius;
+        /// link frames (FrameOp index, exact in float) padded like linkRadius with -1: one vector compare finds the
+        /// links a frame carries
+        std::vector<float> linkFrame;
         /// per link 16 floats (bx x4 | by x4 | bz x4 | 1 x4): its bound centre for the single path's two-column product
         std::vector<float> linkBoundPairs;
         int linkPadded{0};

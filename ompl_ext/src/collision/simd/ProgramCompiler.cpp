@@ -277,10 +277,12 @@ namespace ropras::ompl_ext::simd
             p.sphereSlots = static_cast<int>(p.sx.size());
             p.linkPadded = static_cast<int>(roundUp(p.links.size()));
             p.linkRadius.assign(static_cast<std::size_t>(p.linkPadded), 0.0f);
+            p.linkFrame.assign(static_cast<std::size_t>(p.linkPadded), -1.0f);
             p.linkBoundPairs.assign(16 * p.links.size(), 1.0f);
             for (std::size_t l = 0; l < p.links.size(); ++l)
             {
                 p.linkRadius[l] = p.links[l].br;
+                p.linkFrame[l] = static_cast<float>(p.links[l].frame);
                 for (int i = 0; i < 4; ++i)
                 {
                     p.linkBoundPairs[16 * l + static_cast<std::size_t>(i)] = p.links[l].bx;

@@ -60,6 +60,9 @@ namespace ropras::ompl_ext
             body's own frame (their relative pose never changes; a contact with such a link that may not be touched
             is decided once, in alwaysCollides). */
         std::vector<std::uint8_t> skipLink;
+        /// true when some link the body may touch is carried by another frame than the body's (skipLink then holds
+        /// more than the links of its own frame)
+        bool touchesOtherFrames{false};
         /// the body touches a link of its own frame that it may not touch: every configuration is in collision
         bool alwaysCollides{false};
         /// in double, for the references: sphere centres in the link frame and radii
