@@ -128,6 +128,8 @@ namespace ropras::ompl_ext::simd
             };
             for (const Environment *e = &env; e != nullptr; e = e->base())
             {
+                if (e->primitiveCount() == 0)  // a particle's overlay that holds only attached bodies
+                    continue;
                 if (const ObstacleTree *tree = e->obstacleTree())
                 {
                     // the broad phase: the primitives whose boxes overlap the bound's box
@@ -240,6 +242,9 @@ namespace ropras::ompl_ext::simd
                                   Placed &placed) noexcept
         {
             const float *frames = buf + p.single.frames;
+            std::size_t bodies = 0;
+            for (const Environment *e = &env; e != nullptr; e = e->base())
+                bodies += e->attachedCount();
             return forEachAttached(env,
                                    [&](const AttachedSpheres &a)
                                    {
@@ -250,6 +255,8 @@ namespace ropras::ompl_ext::simd
                                        placeSingle(m, a.bx, a.by, a.bz, bound);
                                        if (bodySingle(p, env, a, buf, placed, m, bound))
                                            return true;
+                                       if (bodies < 2)
+                                           return false;
                                        // bodies on other frames (the same frame carries both rigidly: their contact
                                        // never changes)
                                        bool later = false;

@@ -278,6 +278,8 @@ namespace ropras::ompl_ext::simd
             };
             for (const Environment *e = &env; e != nullptr; e = e->base())  // the overlay, then its bases
             {
+                if (e->primitiveCount() == 0)  // a particle's overlay that holds only attached bodies
+                    continue;
                 if (const ObstacleTree *tree = e->obstacleTree())
                 {
                     // the broad phase: only the primitives whose boxes overlap the robot's
