@@ -54,13 +54,16 @@ for budget in "${rd_budgets[@]}"; do
   run rd-$tag-ropras3-d $RD --solver ropras3 $opt
 done
 # Shelf-Move (issue 19; the same table's other half): the four rows at the paper's 100 simulations per call,
-# ROP-RAS3 Dynamic at 300 and at a tenth of the paper's 8.9 s per call (0.89 s). doc/results.md: ARM_SEED=6300.
+# ROP-RAS3 Dynamic and B-plan at 300 and at a tenth of the paper's 8.9 s per call (0.89 s). doc/results.md:
+# ARM_SEED=6300.
 SM=(--scenario shelf-move)
 run sm-sims-bplan-d "${SM[@]}" --solver bplan --sims 100
 run sm-sims-rpomcp-d "${SM[@]}" --solver rpomcp --sims 100
 run sm-sims-ropras3-u "${SM[@]}" --solver ropras3 --heuristic uniform --sims 100
 run sm-sims-ropras3-d "${SM[@]}" --solver ropras3 --sims 100
+run sm-sims300-bplan-d "${SM[@]}" --solver bplan --sims 300
 run sm-sims300-ropras3-d "${SM[@]}" --solver ropras3 --sims 300
+[ "${ARM_BUDGETS:-}" = sims ] || run sm-time-bplan-d "${SM[@]}" --solver bplan --plan-time 0.89
 [ "${ARM_BUDGETS:-}" = sims ] || run sm-time-ropras3-d "${SM[@]}" --solver ropras3 --plan-time 0.89
 "$R" table ss-sims-*.jsonl
 [ "${ARM_BUDGETS:-}" = sims ] || "$R" table ss-time-*.jsonl
