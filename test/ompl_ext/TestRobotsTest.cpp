@@ -14,6 +14,7 @@
 #include <tuple>
 #include <vector>
 
+#include "CollisionCheckerTestUtil.h"
 #include "ropras/ompl_ext/collision/CollisionChecker.h"
 #include "ropras/ompl_ext/model/RobotModel.h"
 #include "ropras/ompl_ext/ompl/MotionValidator.h"
@@ -24,6 +25,8 @@
 #include "ropras/ompl_ext/scene/Environment.h"
 
 using namespace ropras::ompl_ext;
+using ropras::test::randomConfig;
+using ropras::test::referenceMargin;
 
 namespace
 {
@@ -35,33 +38,10 @@ namespace
         return RobotModel::fromUrdfFile(dir + name + ".urdf", dir + name + ".srdf", options);
     }
 
-    std::vector<double> randomConfig(const RobotModel &robot, std::mt19937_64 &rng)
-    {
-        std::vector<double> q;
-        for (const PlanningJoint &j : robot.joints())
-            q.push_back(std::uniform_real_distribution<double>(j.lower, j.upper)(rng));
-        return q;
-    }
-
     /// brute force in an empty world: some enabled self pair of spheres overlaps (reference FK, double)
     bool referenceSelfCollision(const RobotModel &robot, const double *q)
     {
-        const auto c = robot.sphereCentersReference(q);
-        const auto &spheres = robot.spheres();
-        const auto &links = robot.collisionLinks();
-        for (const auto &pair : robot.selfCollisionPairs())
-        {
-            const CollisionLink &a = links[static_cast<std::size_t>(pair.first)];
-            const CollisionLink &b = links[static_cast<std::size_t>(pair.second)];
-            for (int i = a.firstSphere; i < a.firstSphere + a.sphereCount; ++i)
-                for (int j = b.firstSphere; j < b.firstSphere + b.sphereCount; ++j)
-                {
-                    const auto si = static_cast<std::size_t>(i), sj = static_cast<std::size_t>(j);
-                    if ((c[si] - c[sj]).norm() < spheres[si].radius + spheres[sj].radius)
-                        return true;
-                }
-        }
-        return false;
+        return referenceMargin(robot, Environment(), q) < 0.0;
     }
 
     void checkFkAndVerdicts(const std::shared_ptr<const RobotModel> &robot)
