@@ -149,6 +149,14 @@ TEST(CollisionCheckerTest, LastValidFractionContract)
         double lastFromWall = -1.0;
         EXPECT_FALSE(checker.isMotionValid(env, inWall.data(), q0.data(), res, &lastFromWall, true));
         EXPECT_EQ(lastFromWall, 0.0);
+        // a valid motion reports 1 (the whole motion), both for many samples and for a single one
+        const std::vector<double> beside{-1.2, 0.0, 0.0, -1.5, 0.0, 1.8, 0.8};
+        double whole = -1.0;
+        ASSERT_TRUE(checker.isMotionValid(env, q0.data(), beside.data(), res, &whole));
+        EXPECT_EQ(whole, 1.0);
+        whole = -1.0;
+        EXPECT_TRUE(checker.isMotionValid(env, q0.data(), q0.data(), res, &whole));
+        EXPECT_EQ(whole, 1.0);
         // a zero-length motion checks q1 only
         EXPECT_TRUE(checker.isMotionValid(env, q0.data(), q0.data(), res));
         EXPECT_FALSE(checker.isMotionValid(env, inWall.data(), inWall.data(), res, &lastFromWall));

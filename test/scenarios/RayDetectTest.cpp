@@ -372,6 +372,40 @@ namespace ropras::scenarios
         EXPECT_GT(worldBlocked, 10u);
     }
 
+    // The model's arm moves as the world's: the same action and noise draw give the same next joints, in free
+    // space (the whole step) and when blocked (within the resolution of the last valid sample).
+    TEST(RayDetectTest, ModelAndWorldMoveTheArmAlike)
+    {
+        const auto model = defaultParts().model;
+        RayDetectWorld world(model);
+        State s = model->nominalState();
+        world.reset(s);
+        std::size_t moved = 0, blocked = 0;
+        for (int i = 0; i < 60; ++i)
+        {
+            RayDetectModel::Action a;
+            a.dq[0] = i < 30 ? 0.02 : -0.02;
+            a.dq[1] = 0.03;
+            a.dq[3] = 0.02;
+            pomdp::Rng modelRng(100 + i), worldRng(100 + i);
+            const auto m = model->step(s, a, modelRng);
+            const auto w = world.step(a, worldRng);
+            double gap = 0.0, step = 0.0;
+            for (std::size_t j = 0; j < ARM_DOF; ++j)
+            {
+                gap = std::max(gap, std::abs(m.next.q[j] - w.next.q[j]));
+                step = std::max(step, std::abs(m.next.q[j] - s.q[j]));
+            }
+            EXPECT_LT(gap, 2.0 * model->config().resolution) << "step " << i;
+            moved += step > 0.5 * model->config().step ? 1 : 0;
+            blocked += step < 1e-9 ? 1 : 0;
+            s = m.next;
+            world.reset(s);
+        }
+        EXPECT_GT(moved, 20u);  // free-space steps move by about the commanded step
+        std::printf("model vs world, 60 steps from the start: %zu moved, %zu blocked at once\n", moved, blocked);
+    }
+
     TEST(RayDetectTest, ReferenceMacrosAreCollisionFreeInTheSampledParticlesScene)
     {
         const auto &parts = defaultParts();

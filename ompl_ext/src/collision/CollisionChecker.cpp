@@ -414,7 +414,11 @@ namespace ropras::ompl_ext
     bool CollisionChecker::isMotionValid(const Environment &env, const double *q0, const double *q1, double resolution,
                                          double *lastValidFraction, bool checkStart) const noexcept
     {
-        return ROPRAS_DISPATCH(isMotionValid(program_->kp, env, q0, q1, resolution, lastValidFraction, checkStart));
+        const bool valid =
+            ROPRAS_DISPATCH(isMotionValid(program_->kp, env, q0, q1, resolution, lastValidFraction, checkStart));
+        if (valid && lastValidFraction != nullptr)
+            *lastValidFraction = 1.0;  // the whole motion: a caller may interpolate with it either way
+        return valid;
     }
 
     void CollisionChecker::sphereCenters(const double *q, float *out) const noexcept

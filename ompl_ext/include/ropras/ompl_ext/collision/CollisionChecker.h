@@ -56,8 +56,9 @@ namespace ropras::ompl_ext
         bool allValid(const Environment &env, const double *qs, std::size_t count) const noexcept;
         /** \brief The straight joint-space motion q0 -> q1, interpolated at \a resolution (max joint step,
             rad or m) and raked over the SIMD lanes. q1 is checked; q0 is assumed valid (checked too when
-            \a checkStart). On failure, when \a lastValidFraction is non-null it receives the largest
-            t in [0,1) such that every checked configuration up to t is valid (within one step). */
+            \a checkStart). When \a lastValidFraction is non-null it receives 1 if the motion is valid, else the
+            largest t in [0,1) such that every checked configuration up to t is valid (within one step), so that
+            q0 + t (q1 - q0) is where a blocked motion stops in either case. */
         bool isMotionValid(const Environment &env, const double *q0, const double *q1, double resolution,
                            double *lastValidFraction = nullptr, bool checkStart = false) const noexcept;
 
