@@ -194,13 +194,8 @@ namespace ropras::scenarios
 
     bool ShelfMoveModel::motionValid(const State &s, const double *target, double *fraction) const noexcept
     {
-        double f = 1.0;
-        const bool valid = arm_->checker()->isMotionValid(scene(s), s.q, target, config_.resolution, &f);
-        if (fraction != nullptr)
-        {
-            *fraction = valid ? 1.0 : f;
-        }
-        return valid;
+        // the checker reports 1 for a valid motion, and scans for the last valid sample only when asked
+        return arm_->checker()->isMotionValid(scene(s), s.q, target, config_.resolution, fraction);
     }
 
     pomdp::StepResult<ShelfMoveModel::State, ShelfMoveModel::Observation> ShelfMoveModel::step(
