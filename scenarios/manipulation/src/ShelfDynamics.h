@@ -123,6 +123,7 @@ namespace ropras::scenarios
         };
     }  // namespace shelf_dynamics
 
+    /// The Bullet world of one episode, built from the model's configuration (its bodies' user indices as above)
     struct ShelfMoveWorld::Impl
     {
         explicit Impl(const ShelfMoveModel &m);
@@ -130,16 +131,22 @@ namespace ropras::scenarios
         /// whose velocity it derives from the pose change of each step)
         btRigidBody *addBody(btCollisionShape *shape, double mass, const btTransform &pose, int user, bool inWorld,
                              bool kinematic = false);
-        void addShelf();
-        void addCans();
-        void addArm();
+        void addShelf();  ///< the shelf's static boxes and the floor
+        void addCans();   ///< the dynamic cans and the kinematic held-can query body (out of the world)
+        void addArm();    ///< one kinematic body per collision link
+        /// moves a body and refreshes its broadphase bounds
         void setPose(btRigidBody *body, const btTransform &pose);
+        /// the arm's links at \a q, and the held-can body at the hand
         void poseArm(const double *q);
+        /// whether \a body comes within \a threshold of what the query admits (cans if \a cansBlock, arm links by
+        /// \a armMode, the shelf)
         bool touches(btCollisionObject *body, int user, bool cansBlock, shelf_dynamics::Touch::Arm armMode,
                      double threshold = 0.0);
         /// the arm as posed (and the held can) touching the shelf, the cans in the world (\a cansBlock) or itself
         bool posedCollides(bool cansBlock, double within = 0.0);
+        /// can \a k leaves the dynamics and travels with the hand (the held-can body joins the world)
         void hold(int k);
+        /// the held can's dynamic body rejoins the world, its pose the caller's to set (no-op when nothing is held)
         void unhold();
         /// steps the dynamics until every can in the world is quiet for QUIET_STEPS steps (or settle_seconds)
         std::pair<double, bool> settle();
