@@ -31,7 +31,8 @@ namespace ropras::ompl_ext::fcl_reference
     /// the index into ObstacleScene::labels of one of its objects
     std::size_t tagLabel(const fcl::CollisionObjectd *object);
 
-    /// Caches the scene of the last Environment seen (rebuilt when any shape, pose or point cloud differs).
+    /// Caches the scene of the last Environment seen: rebuilt when any shape, pose or point cloud differs (a renamed
+    /// object alone keeps the cached labels; the checkers only quote them in describeCollision).
     class SceneCache
     {
     public:

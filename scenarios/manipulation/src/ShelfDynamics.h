@@ -3,6 +3,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include <algorithm>
 #include <array>
 #include <set>
 #include <utility>
