@@ -52,6 +52,12 @@ namespace ropras::scenarios::test
         expectErrorMentions([] { navScenario("light-dark", {{"horizon", 2.5}}); }, {"horizon"});
         expectErrorMentions([] { navScenario("light-dark", {{"slip", "high"}}); }, {"slip"});
         expectErrorMentions([] { navScenario("maze2d", {{"danger_margin", -1.0}}); }, {"danger_margin", ">= 0"});
+        expectErrorMentions([] { navScenario("maze2d", {{"obstacle_margin", -0.5}}); }, {"obstacle_margin", ">= 0"});
+        expectErrorMentions(
+            [] {
+                navScenario("maze2d", {{"obstacle_margin", std::numeric_limits<double>::infinity()}});
+            },
+            {"obstacle_margin"});
         expectErrorMentions([] { navScenario("maze2d", {{"heuristic_value", 1}}); }, {"heuristic_value"});
         // a start in collision with a wall
         expectErrorMentions(
@@ -196,5 +202,64 @@ namespace ropras::scenarios::test
         ompl->sample(farAway, pomdp::BeliefView<NavState>{&farAway, 1}, rng, macro);
         EXPECT_EQ(ompl->statistics().marginStarts, 10u);
         EXPECT_LT(ompl->planner().environment()->signedDistance(Eigen::Vector3d(-6.0, -4.0, 0.0), 0.25), 0.0);
+    }
+}  // namespace ropras::scenarios::test
+
+namespace ropras::scenarios::test
+{
+    TEST(NavigationScenario, TheObstacleMarginKeepsPathsOffWallsAndStillPlansFromInsideIt)
+    {
+        // maze2d with obstacle_margin 1: the planner sees obstacle [[8, 8], [10.5, 11]] grown to [[7, 7], [11.5, 12]]
+        const auto scenario = navScenario("maze2d", {{"obstacle_margin", 1.0}});
+        const auto &config = asNav(*scenario).parts().model->config();
+        const auto grown = navigationEnvironment(config);
+        const auto tight = navigationEnvironment(config, 0.0, 0.0);
+        const Eigen::Vector3d besideObstacle(11.25, 9.5, 0.0);  // 0.5 m right of the obstacle: free, inside the margin
+        EXPECT_LT(grown->signedDistance(besideObstacle, 0.25), 0.0);
+        EXPECT_GT(tight->signedDistance(besideObstacle, 0.25), 0.0);
+        EXPECT_NEAR(grown->signedDistance(Eigen::Vector3d(11.5, 9.5, 0.0), 0.0), 0.0, 1e-9)
+            << "walls and obstacles grow by the margin per side, danger zones by danger_margin";
+        // the default keeps the true walls and obstacles
+        const auto plain = navigationEnvironment(asNav(*navScenario("maze2d")).parts().model->config());
+        EXPECT_GT(plain->signedDistance(besideObstacle, 0.25), 0.0);
+
+        const auto policy = omplReferencePolicy<NavTarget>(asNav(*scenario).parts(), "uniform", 7);
+        auto *ompl = policy.ompl;
+        ASSERT_NE(ompl, nullptr);
+        pomdp::Rng rng(11);
+        // a particle inside the margin plans in the true obstacles instead of failing with an invalid start
+        const NavState inside = at(besideObstacle.x(), besideObstacle.y());
+        std::size_t solved = 0;
+        for (int i = 0; i < 10; ++i)
+        {
+            std::vector<std::uint8_t> macro;
+            solved += ompl->sample(inside, pomdp::BeliefView<NavState>{&inside, 1}, rng, macro) ? 1 : 0;
+            EXPECT_NE(ompl->lastStatus(), pomdp::PathPlanStatus::InvalidStart);
+        }
+        EXPECT_GE(solved, 5u);
+        EXPECT_EQ(ompl->statistics().marginStarts, 10u);
+        // from a start clear of the margin, every macro's lattice points stay at least the margin less half a step
+        // (the staircase's deviation from the path) away from every wall and obstacle
+        const NavState clear = at(11.0, 15.5);
+        const double slack = 0.5 * config.stepLength + 1e-9;
+        std::size_t macros = 0;
+        for (int i = 0; i < 40; ++i)
+        {
+            std::vector<std::uint8_t> macro;
+            if (!ompl->sample(clear, pomdp::BeliefView<NavState>{&clear, 1}, rng, macro))
+            {
+                continue;
+            }
+            ++macros;
+            NavState s = clear;
+            for (const auto a : macro)
+            {
+                s = asNav(*scenario).parts().model->moved(s, a);
+                EXPECT_GT(tight->signedDistance(Eigen::Vector3d(s.p[0], s.p[1], 0.0), config.robotRadius),
+                          config.obstacleMargin - slack)
+                    << "macro point (" << s.p[0] << ", " << s.p[1] << ")";
+            }
+        }
+        EXPECT_GE(macros, 20u);
     }
 }  // namespace ropras::scenarios::test

@@ -136,6 +136,7 @@ namespace ropras::scenarios
         c.planResolution = r.positive("plan_resolution");
         c.plannerRange = r.positive("planner_range");
         c.dangerMargin = r.nonNegative("danger_margin");
+        c.obstacleMargin = r.nonNegative("obstacle_margin");
         const auto &heuristic = r.at("heuristic_value");
         if (!heuristic.is_boolean())
         {

@@ -171,9 +171,10 @@ namespace ropras::scenarios
     }
 
     std::shared_ptr<const ompl_ext::Environment> navigationEnvironment(const NavigationConfig &config,
-                                                                       double dangerMargin)
+                                                                       double dangerMargin, double obstacleMargin)
     {
         const double margin = dangerMargin < 0.0 ? config.dangerMargin : dangerMargin;
+        const double clearance = obstacleMargin < 0.0 ? config.obstacleMargin : obstacleMargin;
         auto env = std::make_shared<ompl_ext::Environment>();
         const auto add = [&](const std::string &prefix, const std::vector<NavBox> &boxes, double margin)
         {
@@ -190,8 +191,10 @@ namespace ropras::scenarios
                             size);
             }
         };
-        add("wall", config.walls, 0.0);
-        add("obstacle", config.obstacles, 0.0);
+        // grown by obstacle_margin: paths keep off the walls and obstacles that a drifting robot's particles
+        // would get stuck on (a belief split along the wall)
+        add("wall", config.walls, clearance);
+        add("obstacle", config.obstacles, clearance);
         // grown by danger_margin: reference paths keep that clearance from danger (the robot drifts)
         add("danger", config.dangerZones, margin);
         return env;
@@ -204,7 +207,8 @@ namespace ropras::scenarios
         auto model = std::make_shared<const NavigationModel>(config);
         auto robot = loadNavigationRobot(config, folder);
         auto env = navigationEnvironment(config);
-        auto tight = config.dangerMargin > 0.0 ? navigationEnvironment(config, 0.0) : nullptr;
+        auto tight = config.dangerMargin > 0.0 || config.obstacleMargin > 0.0 ? navigationEnvironment(config, 0.0, 0.0)
+                                                                              : nullptr;
         auto space = std::make_shared<const NavigationTargetSpace>(model);
 
         ScenarioParts<NavigationModel> parts;
@@ -229,8 +233,8 @@ namespace ropras::scenarios
             auto adapter = std::make_shared<const NavigationPlanningAdapter>(model, macroLength);
             auto policy = std::make_unique<pomdp::OmplReferencePolicy<NavigationModel, NavTarget>>(
                 adapter, std::move(heuristic), robot, env, planner);
-            // a particle inside the danger margin (not in the zone: that ends the episode) plans its way out
-            // with the danger zones at their true size instead of failing with an invalid start
+            // a particle inside a margin (not in the zone: that ends the episode) plans its way out with the
+            // danger zones, walls and obstacles at their true size instead of failing with an invalid start
             policy->setTrueEnvironment(tight);
             return policy;
         };

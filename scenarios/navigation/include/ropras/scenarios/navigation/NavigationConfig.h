@@ -69,6 +69,7 @@ namespace ropras::scenarios
         double referencePlanTime{0.003};  ///< per-plan OMPL time limit of the reference policy (s)
         double planResolution{0.1};       ///< motion-check resolution of the reference planner (m)
         double dangerMargin{0.0};         ///< the planner sees danger zones grown by this much per side (m)
+        double obstacleMargin{0.0};       ///< the planner sees walls and obstacles grown by this much per side (m)
         bool heuristicValue{false};       ///< leaf value from the goal distance field (NavigationModel::heuristicValue)
         /// the belief uses "the episode went on" as evidence (no particle stays in the goal or a danger zone);
         /// false = the paper's observation space R^n u {None} only

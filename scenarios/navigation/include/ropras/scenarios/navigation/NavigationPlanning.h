@@ -47,9 +47,10 @@ namespace ropras::scenarios
         the largest remaining difference to the next point while it exceeds half a step; at most
         macroLength actions.
 
-        Obstacles: the policy's base environment grows the danger zones by danger_margin; the environment with
-        the zones at their true size is the policy's true environment (OmplReferencePolicy::setTrueEnvironment),
-        so a particle inside the margin can still plan its way out. */
+        Obstacles: the policy's base environment grows the danger zones by danger_margin and the walls and
+        obstacles by obstacle_margin; the environment with everything at its true size is the policy's true
+        environment (OmplReferencePolicy::setTrueEnvironment), so a particle inside a margin can still plan its
+        way out. */
     class NavigationPlanningAdapter final : public pomdp::OmplPlanningAdapter<NavState, std::uint8_t, NavTarget>
     {
     public:
@@ -71,11 +72,13 @@ namespace ropras::scenarios
     std::shared_ptr<const ompl_ext::RobotModel> loadNavigationRobot(const NavigationConfig &config,
                                                                     const std::string &folder);
 
-    /** \brief The planner's obstacles: walls, obstacles AND danger zones (grown by \a dangerMargin per side;
-        negative = the configuration's danger_margin) as boxes, so reference paths keep clear of danger
-        zones; 2-D boxes span z in [-1, 1]. */
+    /** \brief The planner's obstacles: walls and obstacles (grown by \a obstacleMargin per side) AND danger
+        zones (grown by \a dangerMargin per side) as boxes, so reference paths keep clear of danger zones and,
+        with a margin, of what the robot would get stuck on; a negative margin = the configuration's
+        danger_margin / obstacle_margin; 2-D boxes span z in [-1, 1]. */
     std::shared_ptr<const ompl_ext::Environment> navigationEnvironment(const NavigationConfig &config,
-                                                                       double dangerMargin = -1.0);
+                                                                       double dangerMargin = -1.0,
+                                                                       double obstacleMargin = -1.0);
 
     /** \brief The scenario \a name from its effective configuration \a json (parsed and validated here) and
         the robot of scenarios/<folder>/robot.urdf. */
