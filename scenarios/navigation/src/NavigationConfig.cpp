@@ -137,6 +137,7 @@ namespace ropras::scenarios
         c.plannerRange = r.positive("planner_range");
         c.dangerMargin = r.nonNegative("danger_margin");
         c.obstacleMargin = r.nonNegative("obstacle_margin");
+        c.recoverFromObservation = r.choice("depletion_recovery", {"ignore", "observation"}) == "observation";
         const auto &heuristic = r.at("heuristic_value");
         if (!heuristic.is_boolean())
         {

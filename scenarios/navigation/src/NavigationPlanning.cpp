@@ -5,6 +5,7 @@
 
 #include "ropras/core/Error.h"
 #include "ropras/scenarios/ScenarioRegistry.h"
+#include "ropras/scenarios/navigation/NavigationRecovery.h"
 #include "ropras/scenarios/navigation/NavigationWorld.h"
 
 namespace ropras::scenarios
@@ -238,6 +239,11 @@ namespace ropras::scenarios
             policy->setTrueEnvironment(tight);
             return policy;
         };
+        if (config.recoverFromObservation)
+        {
+            parts.recovery = []() -> std::unique_ptr<pomdp::DepletionRecovery<NavigationModel>>
+            { return std::make_unique<NavigationRecovery>(); };
+        }
         parts.world = [model]() -> std::unique_ptr<pomdp::World<NavigationModel>>
         { return std::make_unique<NavigationWorld>(model); };
         parts.points = [](const NavState &s, std::vector<Point3> &out) { out.push_back({{s.p[0], s.p[1], s.p[2]}}); };

@@ -70,7 +70,9 @@ namespace ropras::scenarios
         double planResolution{0.1};       ///< motion-check resolution of the reference planner (m)
         double dangerMargin{0.0};         ///< the planner sees danger zones grown by this much per side (m)
         double obstacleMargin{0.0};       ///< the planner sees walls and obstacles grown by this much per side (m)
-        bool heuristicValue{false};       ///< leaf value from the goal distance field (NavigationModel::heuristicValue)
+        /// "depletion_recovery": true = "observation" (NavigationRecovery), false = "ignore" (keep the particles)
+        bool recoverFromObservation{false};
+        bool heuristicValue{false};  ///< leaf value from the goal distance field (NavigationModel::heuristicValue)
         /// the belief uses "the episode went on" as evidence (no particle stays in the goal or a danger zone);
         /// false = the paper's observation space R^n u {None} only
         bool terminationEvidence{false};

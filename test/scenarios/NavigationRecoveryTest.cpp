@@ -1,0 +1,159 @@
+// NavigationRecovery: a depleted navigation belief is rebuilt from what the robot observed.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "ExpectError.h"
+#include "NavigationTestUtil.h"
+#include "ropras/pomdp/ParticleFilter.h"
+#include "ropras/scenarios/navigation/NavigationRecovery.h"
+
+namespace ropras::scenarios::test
+{
+    namespace
+    {
+        std::shared_ptr<const NavigationModel> maze()
+        {
+            static const auto scenario = navScenario("maze2d");
+            return asNav(*scenario).parts().model;
+        }
+
+        bool explains(const NavigationModel &m, const NavState &s, bool seen)
+        {
+            return m.observable(s.p) == seen && !m.blocked(s.p) && !m.inDanger(s.p) && !m.config().goal.contains(s.p);
+        }
+
+        NavObservation seenAt(double x, double y)
+        {
+            NavObservation o;
+            o.seen = true;
+            o.p[0] = x;
+            o.p[1] = y;
+            return o;
+        }
+    }  // namespace
+
+    TEST(NavigationRecovery, AnObservedPositionRedrawsTheBeliefAroundIt)
+    {
+        // maze2d: the robot sees itself at (-14.5, 15) in landmark L1 [[-16, 12], [-13, 18]]; every particle
+        // believes it is at the mirror start B (-20, -15), which cannot have produced that observation
+        const auto model = maze();
+        const auto o = seenAt(-14.5, 15.0);
+        std::vector<NavState> particles(400, at(-20.0, -15.0));
+        std::vector<double> weights(particles.size(), 0.0);
+        ASSERT_EQ(model->observationProbability(o, particles[0], 0), 0.0);
+        NavigationRecovery recovery;
+        pomdp::Rng rng(3);
+        recovery.recover(*model, 0, o, particles, weights, rng);
+        double mx = 0.0, my = 0.0;
+        for (std::size_t i = 0; i < particles.size(); ++i)
+        {
+            ASSERT_EQ(weights[i], 1.0) << "particle " << i << " not redrawn";
+            EXPECT_TRUE(explains(*model, particles[i], true)) << particles[i].p[0] << ", " << particles[i].p[1];
+            EXPECT_GT(model->observationProbability(o, particles[i], 0), 0.0);
+            mx += particles[i].p[0] / 400.0;
+            my += particles[i].p[1] / 400.0;
+        }
+        // N(o, 0.5) cut to L1 (1.5 m each side in x, 3 m in y): the mean stays at o within a few standard errors
+        EXPECT_NEAR(mx, -14.5, 0.1);
+        EXPECT_NEAR(my, 15.0, 0.1);
+    }
+
+    TEST(NavigationRecovery, AnObservationAtAZoneEdgeKeepsTheDrawsInsideTheZone)
+    {
+        // o at L3's left edge [[-10, -2], [-6, 2]]: draws left of x = -10 do not explain a seen position
+        const auto model = maze();
+        const auto o = seenAt(-10.1, 0.0);
+        std::vector<NavState> particles(300, at(0.0, -20.0));
+        std::vector<double> weights(particles.size(), 0.0);
+        NavigationRecovery recovery;
+        pomdp::Rng rng(8);
+        recovery.recover(*model, 0, o, particles, weights, rng);
+        for (std::size_t i = 0; i < particles.size(); ++i)
+        {
+            ASSERT_EQ(weights[i], 1.0);
+            EXPECT_GE(particles[i].p[0], -10.0);
+        }
+    }
+
+    TEST(NavigationRecovery, NoneObservedMovesParticlesJustOutOfTheZones)
+    {
+        // every particle is inside landmark L1 (x in [-16, -13], y in [12, 18]) but the robot saw nothing
+        const auto model = maze();
+        pomdp::Rng rng(5);
+        std::vector<NavState> particles;
+        for (int i = 0; i < 300; ++i)
+        {
+            particles.push_back(at(rng.uniform(-15.9, -13.1), rng.uniform(12.1, 17.9)));
+        }
+        const auto before = particles;
+        std::vector<double> weights(particles.size(), 0.0);
+        NavigationRecovery recovery;
+        recovery.recover(*model, 0, NavObservation{}, particles, weights, rng);
+        std::vector<double> moves;
+        for (std::size_t i = 0; i < particles.size(); ++i)
+        {
+            ASSERT_EQ(weights[i], 1.0) << "particle " << i;
+            EXPECT_TRUE(explains(*model, particles[i], false)) << particles[i].p[0] << ", " << particles[i].p[1];
+            moves.push_back(std::hypot(particles[i].p[0] - before[i].p[0], particles[i].p[1] - before[i].p[1]));
+        }
+        std::sort(moves.begin(), moves.end());
+        // the farthest point of L1 from its border is 1.5 m away: moves stay of that order, not across the maze
+        EXPECT_LT(moves[moves.size() / 2], 2.5);
+        EXPECT_LT(moves.back(), 8.0);
+    }
+
+    TEST(NavigationRecovery, ADepletedFilterLocalisesAtTheObservation)
+    {
+        // through the filter: the belief holds only the wrong mode; one landmark observation moves it to the robot
+        const auto model = maze();
+        pomdp::ParticleFilterSettings settings;
+        settings.numParticles = 200;
+        settings.continuation = true;
+        pomdp::ParticleFilter<NavigationModel> filter(model, settings, std::make_unique<NavigationRecovery>());
+        filter.setParticles(std::vector<NavState>(200, at(-15.0, -21.0)));
+        pomdp::Rng rng(13);
+        const auto o = seenAt(-14.0, 14.0);
+        EXPECT_FALSE(filter.update(0, o, rng)) << "the update depletes";
+        EXPECT_EQ(filter.depletions(), 1u);
+        double mx = 0.0, my = 0.0, w = 0.0;
+        for (std::size_t i = 0; i < filter.particles().size(); ++i)
+        {
+            mx += filter.weights()[i] * filter.particles()[i].p[0];
+            my += filter.weights()[i] * filter.particles()[i].p[1];
+            w += filter.weights()[i];
+        }
+        EXPECT_NEAR(mx / w, -14.0, 0.25);
+        EXPECT_NEAR(my / w, 14.0, 0.25);
+        // the default (ignore the observation) leaves the belief where it was
+        pomdp::ParticleFilter<NavigationModel> ignoring(model, settings);
+        ignoring.setParticles(std::vector<NavState>(200, at(-15.0, -21.0)));
+        ignoring.update(0, o, rng);
+        double iy = 0.0;
+        for (const auto &s : ignoring.particles())
+        {
+            iy += s.p[1] / 200.0;
+        }
+        EXPECT_LT(iy, -15.0);
+    }
+
+    TEST(NavigationRecovery, TheScenarioKeyChoosesTheRecovery)
+    {
+        EXPECT_FALSE(asNav(*navScenario("maze2d")).parts().recovery) << "default: ignore the observation";
+        const auto s = navScenario("maze2d", {{"depletion_recovery", "observation"}});
+        ASSERT_TRUE(asNav(*s).parts().recovery);
+        EXPECT_EQ(asNav(*s).parts().recovery()->name(), "observation");
+        ropras::test::expectErrorMentions(
+            [] {
+                navScenario("maze2d", {{"depletion_recovery", "forget"}});
+            },
+            {"depletion_recovery", "forget"});
+        ropras::test::expectErrorMentions(
+            [] {
+                navScenario("light-dark", {{"depletion_recovery", 1}});
+            },
+            {"depletion_recovery"});
+    }
+}  // namespace ropras::scenarios::test
