@@ -139,6 +139,65 @@ namespace ropras::scenarios::test
         EXPECT_LT(iy, -15.0);
     }
 
+    TEST(NavigationRecovery, ACutoffMakesABeliefFarFromWhatWasSeenDepleteAndRelocalise)
+    {
+        // seed-502 episode 12 of scenario-maze2d.md: the robot, stopped by the wall below gap 2, sees itself in
+        // landmark L4 at (-3, 16) while every particle went through the gap and sits in L5 around (9, 16), 12 m
+        // (24 sigma) away. A plain Gaussian gives those particles a tiny, non-zero likelihood: no depletion, and
+        // the belief stays confidently wrong. With observation_cutoff 4 it depletes and is redrawn at L4.
+        const auto o = seenAt(-3.0, 16.0);
+        pomdp::ParticleFilterSettings settings;
+        settings.numParticles = 200;
+        settings.continuation = true;
+        pomdp::Rng rng(21);
+        std::vector<NavState> lost;
+        for (int i = 0; i < 200; ++i)
+        {
+            lost.push_back(at(rng.uniform(9.5, 12.5), rng.uniform(13.5, 17.5)));
+        }
+        const auto meanX = [](const pomdp::ParticleFilter<NavigationModel> &f)
+        {
+            double m = 0.0, w = 0.0;
+            for (std::size_t i = 0; i < f.particles().size(); ++i)
+            {
+                m += f.weights()[i] * f.particles()[i].p[0];
+                w += f.weights()[i];
+            }
+            return m / w;
+        };
+        const auto plain = maze();
+        ASSERT_GT(plain->observationProbability(o, lost[0], 1), 0.0);
+        pomdp::ParticleFilter<NavigationModel> gaussian(plain, settings, std::make_unique<NavigationRecovery>());
+        gaussian.setParticles(lost);
+        EXPECT_TRUE(gaussian.update(1, o, rng)) << "no depletion without the cutoff";
+        EXPECT_GT(meanX(gaussian), 8.0) << "the belief stays in L5";
+
+        const auto scenario =
+            navScenario("maze2d", {{"observation_cutoff", 4.0}, {"depletion_recovery", "observation"}});
+        const auto cut = asNav(*scenario).parts().model;
+        // the likelihood is the Gaussian within 4 sigma on every axis and 0 beyond
+        EXPECT_DOUBLE_EQ(cut->observationProbability(o, at(-3.5, 17.0), 1),
+                         plain->observationProbability(o, at(-3.5, 17.0), 1));
+        EXPECT_EQ(cut->observationProbability(o, at(-3.0, 18.1), 1), 0.0);
+        EXPECT_EQ(cut->observationProbability(o, lost[0], 1), 0.0);
+        pomdp::ParticleFilter<NavigationModel> filter(cut, settings, asNav(*scenario).parts().recovery());
+        filter.setParticles(lost);
+        EXPECT_FALSE(filter.update(1, o, rng)) << "the cutoff makes it a depletion";
+        EXPECT_NEAR(meanX(filter), -3.0, 0.3) << "redrawn at what was seen";
+        for (std::size_t i = 0; i < filter.particles().size(); ++i)
+        {
+            if (filter.weights()[i] > 0.0)
+            {
+                EXPECT_GT(cut->observationProbability(o, filter.particles()[i], 1), 0.0);
+            }
+        }
+        ropras::test::expectErrorMentions(
+            [] {
+                navScenario("maze2d", {{"observation_cutoff", -1.0}});
+            },
+            {"observation_cutoff", ">= 0"});
+    }
+
     TEST(NavigationRecovery, TheScenarioKeyChoosesTheRecovery)
     {
         EXPECT_FALSE(asNav(*navScenario("maze2d")).parts().recovery) << "default: ignore the observation";

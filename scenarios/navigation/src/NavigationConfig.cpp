@@ -117,6 +117,7 @@ namespace ropras::scenarios
         c.dangerZones = r.boxes("danger_zones", c.dims);
         c.observationZones = r.boxes("observation_zones", c.dims);
         c.observationSigma = r.positive("observation_sigma");
+        c.observationCutoff = r.nonNegative("observation_cutoff");
         c.observationBin = r.positive("observation_bin");
         c.initialSigma = r.nonNegative("initial_sigma");
         c.reinvigorateSigma = r.nonNegative("reinvigorate_sigma");

@@ -280,10 +280,15 @@ namespace ropras::scenarios
             return 0.0;
         }
         const double sigma = config_.observationSigma;
+        const double cutoff = config_.observationCutoff;
         double density = 1.0;
         for (int k = 0; k < config_.dims; ++k)
         {
             const double z = (o.p[k] - next.p[k]) / sigma;
+            if (cutoff > 0.0 && !(std::abs(z) <= cutoff))
+            {
+                return 0.0;  // so far from what was seen that the belief must have lost the robot
+            }
             density *= INV_SQRT_2PI / sigma * std::exp(-0.5 * z * z);
         }
         return density;

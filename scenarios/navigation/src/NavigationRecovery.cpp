@@ -7,14 +7,16 @@ namespace ropras::scenarios
         constexpr int DRAWS = 100;
 
         /// a state from which the episode went on with observation "seen" (true: a position, false: None)
-        bool explains(const NavigationModel &model, const double *p, bool seen) noexcept
+        bool explains(const NavigationModel &model, const NavState &s, const NavigationModel::Observation &o,
+                      const NavigationModel::Action &a) noexcept
         {
             const auto &c = model.config();
-            return model.observable(p) == seen && !model.blocked(p) && !model.inDanger(p) && !c.goal.contains(p);
+            return model.observable(s.p) == o.seen && !model.blocked(s.p) && !model.inDanger(s.p) &&
+                   !c.goal.contains(s.p) && model.observationProbability(o, s, a) > 0.0;
         }
     }  // namespace
 
-    void NavigationRecovery::recover(const NavigationModel &model, const NavigationModel::Action &,
+    void NavigationRecovery::recover(const NavigationModel &model, const NavigationModel::Action &a,
                                      const NavigationModel::Observation &o, std::vector<NavState> &particles,
                                      std::vector<double> &weights, pomdp::Rng &rng)
     {
@@ -33,7 +35,7 @@ namespace ropras::scenarios
                 {
                     t.p[k] = (o.seen ? o.p[k] : s.p[k]) + rng.normal(0.0, spread);
                 }
-                if (explains(model, t.p, o.seen))
+                if (explains(model, t, o, a))
                 {
                     s = t;
                     weights[i] = 1.0;
