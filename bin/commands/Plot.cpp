@@ -43,7 +43,10 @@ namespace
         const std::string title =
             o.title.empty() ? sc::plotMetricLabel(metric) + " against " + sc::plotKeyLabel(o.x) : o.title;
         const std::string svg =
-            sc::lineChartSvg(series, sc::plotKeyLabel(o.x), sc::plotMetricLabel(metric), title, o.logX);
+            metric == sc::PlotMetric::SUCCESS  // rates on the whole 0-100 % axis
+                ? sc::lineChartSvg(series, sc::plotKeyLabel(o.x), sc::plotMetricLabel(metric), title, o.logX, 0.0,
+                                   100.0)
+                : sc::lineChartSvg(series, sc::plotKeyLabel(o.x), sc::plotMetricLabel(metric), title, o.logX);
         std::ofstream file(o.out);
         file << svg;
         if (!file)

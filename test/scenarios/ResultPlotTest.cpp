@@ -150,6 +150,25 @@ namespace ropras::scenarios::test
         expectErrorMentions([&] { lineChartSvg(series, "x", "y", "t", true); }, {"--log-x", "not > 0"});
     }
 
+    TEST(ResultPlot, TheVerticalAxisCoversTheRangeItIsGiven)
+    {
+        // rates of 93-100 %: drawn alone the axis zooms to about 88-100; told to cover 0-100 it has the 0 tick
+        std::vector<PlotSeries> series(1);
+        series[0].label = "ROP-RAS3 uniform";
+        series[0].points = {{1.0, 96.7, 3.3, 30}, {2.0, 93.3, 4.6, 30}, {4.0, 100.0, 0.0, 30}};
+        const auto hasTick = [](const std::string &svg, const std::string &t)
+        { return svg.find("text-anchor=\"end\" font-size=\"11\">" + t + "</text>") != std::string::npos; };
+        const std::string zoomed = lineChartSvg(series, "x", "success (%)", "t");
+        EXPECT_FALSE(hasTick(zoomed, "0"));
+        EXPECT_TRUE(hasTick(zoomed, "100"));
+        const std::string whole = lineChartSvg(series, "x", "success (%)", "t", false, 0.0, 100.0);
+        EXPECT_TRUE(hasTick(whole, "0"));
+        EXPECT_TRUE(hasTick(whole, "50"));
+        EXPECT_TRUE(hasTick(whole, "100"));
+        EXPECT_EQ(lineChartSvg(series, "x", "success (%)", "t", false, NAN, NAN), zoomed)
+            << "NaN: the data's range only";
+    }
+
     TEST(ResultTableCsv, RowsAsCsvWithQuotingAndFullPrecision)
     {
         const ResultTable t = sampleTable();
