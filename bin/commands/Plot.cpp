@@ -1,4 +1,5 @@
 // `ropras plot FILES... --x KEY --y METRIC --out CHART.svg`: the JSON lines of `ropras run` as an SVG line chart.
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -42,11 +43,9 @@ namespace
         }
         const std::string title =
             o.title.empty() ? sc::plotMetricLabel(metric) + " against " + sc::plotKeyLabel(o.x) : o.title;
-        const std::string svg =
-            metric == sc::PlotMetric::SUCCESS  // rates on the whole 0-100 % axis
-                ? sc::lineChartSvg(series, sc::plotKeyLabel(o.x), sc::plotMetricLabel(metric), title, o.logX, 0.0,
-                                   100.0)
-                : sc::lineChartSvg(series, sc::plotKeyLabel(o.x), sc::plotMetricLabel(metric), title, o.logX);
+        const bool rate = metric == sc::PlotMetric::SUCCESS;  // rates on the whole 0-100 % axis
+        const std::string svg = sc::lineChartSvg(series, sc::plotKeyLabel(o.x), sc::plotMetricLabel(metric), title,
+                                                 o.logX, rate ? 0.0 : NAN, rate ? 100.0 : NAN);
         std::ofstream file(o.out);
         file << svg;
         if (!file)

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "ExpectError.h"
@@ -23,6 +24,18 @@ namespace ropras::scenarios::test
         bool explains(const NavigationModel &m, const NavState &s, bool seen)
         {
             return m.observable(s.p) == seen && !m.blocked(s.p) && !m.inDanger(s.p) && !m.config().goal.contains(s.p);
+        }
+
+        double standardDeviation(const std::vector<NavState> &particles, int axis)
+        {
+            double m = 0.0, m2 = 0.0;
+            for (const auto &s : particles)
+            {
+                m += s.p[axis];
+                m2 += s.p[axis] * s.p[axis];
+            }
+            m /= static_cast<double>(particles.size());
+            return std::sqrt(m2 / static_cast<double>(particles.size()) - m * m);
         }
 
         NavObservation seenAt(double x, double y)
@@ -59,6 +72,10 @@ namespace ropras::scenarios::test
         // N(o, 0.5) cut to L1 (1.5 m each side in x, 3 m in y): the mean stays at o within a few standard errors
         EXPECT_NEAR(mx, -14.5, 0.1);
         EXPECT_NEAR(my, 15.0, 0.1);
+        // and its spread: sigma 0.5 cut at +-1.5 m = 3 sigma in x (s.d. 0.493), at +-3 m in y (0.500); the s.e. of a
+        // standard deviation of 400 draws is about 0.018
+        EXPECT_NEAR(standardDeviation(particles, 0), 0.493, 0.06);
+        EXPECT_NEAR(standardDeviation(particles, 1), 0.500, 0.06);
     }
 
     TEST(NavigationRecovery, AnObservationAtAZoneEdgeKeepsTheDrawsInsideTheZone)
@@ -103,6 +120,35 @@ namespace ropras::scenarios::test
         // the farthest point of L1 from its border is 1.5 m away: moves stay of that order, not across the maze
         EXPECT_LT(moves[moves.size() / 2], 2.5);
         EXPECT_LT(moves.back(), 8.0);
+    }
+
+    TEST(NavigationRecovery, NoneObservedNeverMovesAParticleThroughAWall)
+    {
+        // a zone right of wall [[-12, 2.5], [-11, 25]]; particles at its left edge (x in [-10.75, -10.5]): the
+        // shortest way out is 1.5 m left, through the 1 m wall (x < -12.25); the free ways are 2.5 m right or 7 m
+        // up or down. Without the move check, the jitters of 1 m s.d. would take many particles through the wall.
+        const auto scenario = navScenario("maze2d", {{"observation_zones", {{{-11.0, 3.0}, {-8.0, 20.0}}}}});
+        const auto model = asNav(*scenario).parts().model;
+        pomdp::Rng rng(17);
+        std::vector<NavState> particles;
+        for (int i = 0; i < 200; ++i)
+        {
+            particles.push_back(at(rng.uniform(-10.75, -10.5), rng.uniform(10.0, 13.0)));
+        }
+        std::vector<double> weights(particles.size(), 0.0);
+        NavigationRecovery recovery;
+        recovery.recover(*model, 0, NavObservation{}, particles, weights, rng);
+        std::size_t moved = 0;
+        for (std::size_t i = 0; i < particles.size(); ++i)
+        {
+            EXPECT_GT(particles[i].p[0], -11.0) << "particle " << i << " went through the wall";
+            if (weights[i] > 0.0)
+            {
+                ++moved;
+                EXPECT_TRUE(explains(*model, particles[i], false));
+            }
+        }
+        EXPECT_GE(moved, 150u) << "most find the free way out within 16 sigma";
     }
 
     TEST(NavigationRecovery, ADepletedFilterLocalisesAtTheObservation)
@@ -176,8 +222,11 @@ namespace ropras::scenarios::test
             navScenario("maze2d", {{"observation_cutoff", 4.0}, {"depletion_recovery", "observation"}});
         const auto cut = asNav(*scenario).parts().model;
         // the likelihood is the Gaussian within 4 sigma on every axis and 0 beyond
-        EXPECT_DOUBLE_EQ(cut->observationProbability(o, at(-3.5, 17.0), 1),
-                         plain->observationProbability(o, at(-3.5, 17.0), 1));
+        // z = (1, -2): (2 pi sigma^2)^-1 exp(-(1 + 4) / 2) with sigma 0.5
+        const double closedForm = 1.0 / (2.0 * M_PI * 0.25) * std::exp(-2.5);
+        EXPECT_NEAR(cut->observationProbability(o, at(-3.5, 17.0), 1), closedForm, 1e-12);
+        EXPECT_NEAR(plain->observationProbability(o, at(-3.5, 17.0), 1), closedForm, 1e-12);
+        EXPECT_GT(cut->observationProbability(o, at(-3.0, 17.99), 1), 0.0) << "3.98 sigma: inside";
         EXPECT_EQ(cut->observationProbability(o, at(-3.0, 18.1), 1), 0.0);
         EXPECT_EQ(cut->observationProbability(o, lost[0], 1), 0.0);
         pomdp::ParticleFilter<NavigationModel> filter(cut, settings, asNav(*scenario).parts().recovery());
@@ -196,6 +245,20 @@ namespace ropras::scenarios::test
                 navScenario("maze2d", {{"observation_cutoff", -1.0}});
             },
             {"observation_cutoff", ">= 0"});
+        ropras::test::expectErrorMentions(
+            [] {
+                navScenario("maze2d", {{"observation_cutoff", 2.0}});
+            },
+            {"observation_cutoff", "= 2", ">= 3"});
+        ropras::test::expectErrorMentions(
+            [] {
+                navScenario("maze2d", {{"observation_cutoff", "far"}});
+            },
+            {"observation_cutoff"});
+        NavObservation bad = o;
+        bad.p[0] = std::numeric_limits<double>::quiet_NaN();
+        EXPECT_EQ(cut->observationProbability(bad, at(-3.0, 16.0), 1), 0.0) << "NaN: 0, not NaN";
+        EXPECT_EQ(plain->observationProbability(bad, at(-3.0, 16.0), 1), 0.0);
     }
 
     TEST(NavigationRecovery, TheScenarioKeyChoosesTheRecovery)

@@ -53,6 +53,7 @@ namespace ropras::scenarios::test
         expectErrorMentions([] { navScenario("light-dark", {{"slip", "high"}}); }, {"slip"});
         expectErrorMentions([] { navScenario("maze2d", {{"danger_margin", -1.0}}); }, {"danger_margin", ">= 0"});
         expectErrorMentions([] { navScenario("maze2d", {{"obstacle_margin", -0.5}}); }, {"obstacle_margin", ">= 0"});
+        expectErrorMentions([] { navScenario("maze2d", {{"obstacle_margin", "wide"}}); }, {"obstacle_margin"});
         expectErrorMentions(
             [] {
                 navScenario("maze2d", {{"obstacle_margin", std::numeric_limits<double>::infinity()}});
@@ -219,11 +220,18 @@ namespace ropras::scenarios::test
         EXPECT_GT(tight->signedDistance(besideObstacle, 0.25), 0.0);
         EXPECT_NEAR(grown->signedDistance(Eigen::Vector3d(11.5, 9.5, 0.0), 0.0), 0.0, 1e-9)
             << "walls and obstacles grow by the margin per side, danger zones by danger_margin";
+        const Eigen::Vector3d besideWall(-10.5, 10.0, 0.0);  // 0.5 m right of wall [[-12, 2.5], [-11, 25]]
+        EXPECT_LT(grown->signedDistance(besideWall, 0.25), 0.0);
+        EXPECT_GT(tight->signedDistance(besideWall, 0.25), 0.0);
         // the default keeps the true walls and obstacles
         const auto plain = navigationEnvironment(asNav(*navScenario("maze2d")).parts().model->config());
         EXPECT_GT(plain->signedDistance(besideObstacle, 0.25), 0.0);
 
-        const auto policy = omplReferencePolicy<NavTarget>(asNav(*scenario).parts(), "uniform", 7);
+        // plans bounded by iterations, with time to spare: the counts below do not depend on the machine's load
+        pomdp::ParameterMap params;
+        params.set("plan_iterations", 20000);
+        params.set("plan_time", 2.0);
+        const auto policy = omplReferencePolicy<NavTarget>(asNav(*scenario).parts(), "uniform", 7, params);
         auto *ompl = policy.ompl;
         ASSERT_NE(ompl, nullptr);
         pomdp::Rng rng(11);

@@ -24,12 +24,13 @@ namespace ropras::scenarios::test
     /// the reference policy of \a parts with the \a heuristic and the default parameters, built with \a seed
     template <class Target, class M>
     OmplPolicyOf<M, Target> omplReferencePolicy(const ScenarioParts<M> &parts, const std::string &heuristic,
-                                                std::uint64_t seed)
+                                                std::uint64_t seed,
+                                                const pomdp::ParameterMap &params = pomdp::ParameterMap())
     {
         RunSettings settings;
         settings.heuristic = heuristic;
         OmplPolicyOf<M, Target> out;
-        out.owner = parts.referencePolicy(settings, pomdp::ParameterMap(), seed);
+        out.owner = parts.referencePolicy(settings, params, seed);
         out.ompl = dynamic_cast<pomdp::OmplReferencePolicy<M, Target> *>(out.owner.get());
         EXPECT_NE(out.ompl, nullptr) << parts.name << ": the reference policy is not an OmplReferencePolicy";
         return out;

@@ -118,6 +118,12 @@ namespace ropras::scenarios
         c.observationZones = r.boxes("observation_zones", c.dims);
         c.observationSigma = r.positive("observation_sigma");
         c.observationCutoff = r.nonNegative("observation_cutoff");
+        if (c.observationCutoff > 0.0 && c.observationCutoff < 3.0)
+        {
+            // below 3 sigma the truth itself is cut too often (1 - (1 - 2 Q(k))^dims per seen step: 9 % at k = 2)
+            r.fail("observation_cutoff", "= " + nlohmann::json(c.observationCutoff).dump() +
+                                             " must be 0 (off) or >= 3 (observation_sigma units)");
+        }
         c.observationBin = r.positive("observation_bin");
         c.initialSigma = r.nonNegative("initial_sigma");
         c.reinvigorateSigma = r.nonNegative("reinvigorate_sigma");

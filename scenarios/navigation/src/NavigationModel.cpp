@@ -190,6 +190,11 @@ namespace ropras::scenarios
         return false;
     }
 
+    bool NavigationModel::continuesAt(const double *p) const noexcept
+    {
+        return !blocked(p) && !inDanger(p) && !config_.goal.contains(p);
+    }
+
     bool NavigationModel::observable(const double *p) const noexcept
     {
         for (const auto &b : config_.observationZones)
@@ -280,14 +285,14 @@ namespace ropras::scenarios
             return 0.0;
         }
         const double sigma = config_.observationSigma;
-        const double cutoff = config_.observationCutoff;
+        const double cutoff = config_.observationCutoff > 0.0 ? config_.observationCutoff : INFINITY;
         double density = 1.0;
         for (int k = 0; k < config_.dims; ++k)
         {
             const double z = (o.p[k] - next.p[k]) / sigma;
-            if (cutoff > 0.0 && !(std::abs(z) <= cutoff))
+            if (!(std::abs(z) <= cutoff))
             {
-                return 0.0;  // so far from what was seen that the belief must have lost the robot
+                return 0.0;  // beyond the cutoff (the belief must have lost the robot), or NaN
             }
             density *= INV_SQRT_2PI / sigma * std::exp(-0.5 * z * z);
         }
@@ -312,7 +317,7 @@ namespace ropras::scenarios
                 {
                     t.p[k] = start[k] + rng.normal(0.0, config_.initialSigma);
                 }
-                if (!blocked(t.p) && !inDanger(t.p) && !config_.goal.contains(t.p))
+                if (continuesAt(t.p))
                 {
                     return t;
                 }

@@ -174,10 +174,10 @@ namespace ropras::scenarios
     std::shared_ptr<const ompl_ext::Environment> navigationEnvironment(const NavigationConfig &config,
                                                                        double dangerMargin, double obstacleMargin)
     {
-        const double margin = dangerMargin < 0.0 ? config.dangerMargin : dangerMargin;
-        const double clearance = obstacleMargin < 0.0 ? config.obstacleMargin : obstacleMargin;
+        const double dangerGrow = dangerMargin < 0.0 ? config.dangerMargin : dangerMargin;
+        const double obstacleGrow = obstacleMargin < 0.0 ? config.obstacleMargin : obstacleMargin;
         auto env = std::make_shared<ompl_ext::Environment>();
-        const auto add = [&](const std::string &prefix, const std::vector<NavBox> &boxes, double margin)
+        const auto add = [&](const std::string &prefix, const std::vector<NavBox> &boxes, double grow)
         {
             for (std::size_t i = 0; i < boxes.size(); ++i)
             {
@@ -186,7 +186,7 @@ namespace ropras::scenarios
                 Eigen::Vector3d size(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]);
                 for (int k = 0; k < config.dims; ++k)
                 {
-                    size[k] += 2.0 * margin;
+                    size[k] += 2.0 * grow;
                 }
                 env->addBox(prefix + std::to_string(i), Eigen::Isometry3d(Eigen::Translation3d(c[0], c[1], c[2])),
                             size);
@@ -194,10 +194,10 @@ namespace ropras::scenarios
         };
         // grown by obstacle_margin: paths keep off the walls and obstacles that a drifting robot's particles
         // would get stuck on (a belief split along the wall)
-        add("wall", config.walls, clearance);
-        add("obstacle", config.obstacles, clearance);
+        add("wall", config.walls, obstacleGrow);
+        add("obstacle", config.obstacles, obstacleGrow);
         // grown by danger_margin: reference paths keep that clearance from danger (the robot drifts)
-        add("danger", config.dangerZones, margin);
+        add("danger", config.dangerZones, dangerGrow);
         return env;
     }
 

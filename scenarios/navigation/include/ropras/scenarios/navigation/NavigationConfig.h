@@ -59,8 +59,9 @@ namespace ropras::scenarios
         std::vector<NavBox> dangerZones;       ///< entering: dangerReward, terminal
         std::vector<NavBox> observationZones;  ///< light stripe / landmarks: position observed
         double observationSigma{0.1};
-        /// the filter's likelihood of a seen position is 0 beyond this many observation_sigma on any axis (0 = a
-        /// plain Gaussian): a belief none of whose particles is that close to what was seen counts as depleted
+        /// the model's likelihood of a seen position (the episode filter's, RBSS's) is 0 beyond this many
+        /// observation_sigma on any axis (0 = a plain Gaussian, else >= 3): a belief none of whose particles is that
+        /// close to what was seen counts as depleted; use with depletion_recovery "observation"
         double observationCutoff{0.0};
         double observationBin{1.0};
         std::vector<std::array<double, 3>> starts;  ///< initial belief: one of them uniformly ...

@@ -81,6 +81,8 @@ namespace ropras::scenarios
         bool blocked(const double *p) const noexcept;
         bool inDanger(const double *p) const noexcept;
         bool observable(const double *p) const noexcept;
+        /** \brief The episode goes on at \a p: not blocked, not in a danger zone, not in the goal. */
+        bool continuesAt(const double *p) const noexcept;
 
     private:
         static constexpr std::uint16_t UNREACHABLE = 0xFFFF;
