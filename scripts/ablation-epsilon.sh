@@ -5,7 +5,9 @@
 # here is a tenth of it, 0.3 s (`--plan-time`), or a simulation budget with SIMS=N.
 # Usage: scripts/ablation-epsilon.sh [OUT_DIR] (default: ablation-epsilon/)
 # Environment: EPISODES (30), SEED (1), THREADS (1), PLAN_TIME (0.3), SIMS (unset), SCENARIOS ("maze2d multi-drone"),
-#              ROPRAS (build/bin/ropras).
+#              ROPRAS (build/bin/ropras), RPOMCP_PLAN_TIME (unset: R-POMCP gets the same budget as ROP-RAS3; set,
+#              R-POMCP plans for that many seconds per call instead: with SIMS=1000 on maze2d, R-POMCP's 1000
+#              simulations take about 5 s per call, ROP-RAS3's about 1 s, so an equal-time line is RPOMCP_PLAN_TIME=1).
 # Writes OUT_DIR/<scenario>-eps<E>.jsonl, OUT_DIR/<scenario>-rpomcp.jsonl and OUT_DIR/<scenario>-epsilon.svg.
 set -eu
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -20,7 +22,11 @@ for scenario in ${SCENARIOS:-maze2d multi-drone}; do
     "$R" run --scenario "$scenario" --solver ropras3 --epsilon "$eps" "${common[@]}" \
       --out "$out/$scenario-eps$eps.jsonl" > /dev/null
   done
-  "$R" run --scenario "$scenario" --solver rpomcp --epsilon 0 "${common[@]}" --out "$out/$scenario-rpomcp.jsonl" \
+  rpomcp=("${common[@]}")
+  if [ -n "${RPOMCP_PLAN_TIME:-}" ]; then
+    rpomcp=(--episodes "${EPISODES:-30}" --seed "${SEED:-1}" --threads "${THREADS:-1}" --quiet --plan-time "$RPOMCP_PLAN_TIME")
+  fi
+  "$R" run --scenario "$scenario" --solver rpomcp --epsilon 0 "${rpomcp[@]}" --out "$out/$scenario-rpomcp.jsonl" \
     > /dev/null
   "$R" plot "$out/$scenario"-eps*.jsonl "$out/$scenario-rpomcp.jsonl" --x epsilon --y success --flat R-POMCP \
     --title "$scenario: success against epsilon (ROP-RAS3; R-POMCP at epsilon 0)" --out "$out/$scenario-epsilon.svg"
