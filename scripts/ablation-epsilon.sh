@@ -15,7 +15,8 @@ R=${ROPRAS:-$here/build/bin/ropras}
 out=${1:-ablation-epsilon}
 budget=(--plan-time "${PLAN_TIME:-0.3}")
 if [ -n "${SIMS:-}" ]; then budget=(--sims "$SIMS"); fi
-common=(--episodes "${EPISODES:-30}" --seed "${SEED:-1}" --threads "${THREADS:-1}" --quiet "${budget[@]}")
+episodes=(--episodes "${EPISODES:-30}" --seed "${SEED:-1}" --threads "${THREADS:-1}" --quiet)
+common=("${episodes[@]}" "${budget[@]}")
 mkdir -p "$out"
 for scenario in ${SCENARIOS:-maze2d multi-drone}; do
   for eps in 0 0.2 0.4 0.6 0.8 1; do
@@ -23,9 +24,7 @@ for scenario in ${SCENARIOS:-maze2d multi-drone}; do
       --out "$out/$scenario-eps$eps.jsonl" > /dev/null
   done
   rpomcp=("${common[@]}")
-  if [ -n "${RPOMCP_PLAN_TIME:-}" ]; then
-    rpomcp=(--episodes "${EPISODES:-30}" --seed "${SEED:-1}" --threads "${THREADS:-1}" --quiet --plan-time "$RPOMCP_PLAN_TIME")
-  fi
+  if [ -n "${RPOMCP_PLAN_TIME:-}" ]; then rpomcp=("${episodes[@]}" --plan-time "$RPOMCP_PLAN_TIME"); fi
   "$R" run --scenario "$scenario" --solver rpomcp --epsilon 0 "${rpomcp[@]}" --out "$out/$scenario-rpomcp.jsonl" \
     > /dev/null
   "$R" plot "$out/$scenario"-eps*.jsonl "$out/$scenario-rpomcp.jsonl" --x epsilon --y success --flat R-POMCP \

@@ -11,12 +11,12 @@ namespace ropras::scenarios
         constexpr int SPREAD_LEVELS = 5;      ///< None: jitter s.d. sigma, 2 sigma, ... 16 sigma
         constexpr int DRAWS_PER_SPREAD = 20;  ///< None: draws at each s.d.
 
-        /// a state from which the episode went on with observation \a o
+        /// a state from which the episode went on with observation \a o (the likelihood is 0 where a seen
+        /// position is unobservable, None observable, or beyond the cutoff)
         bool explains(const NavigationModel &model, const NavState &s, const NavigationModel::Observation &o,
                       const NavigationModel::Action &a) noexcept
         {
-            return model.continuesAt(s.p) && model.observable(s.p) == o.seen &&
-                   model.observationProbability(o, s, a) > 0.0;
+            return model.continuesAt(s.p) && model.observationProbability(o, s, a) > 0.0;
         }
 
         /// the straight move from \a s to \a t never touches a wall or obstacle (checked every quarter step)
