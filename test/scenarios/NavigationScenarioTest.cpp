@@ -271,3 +271,32 @@ namespace ropras::scenarios::test
         EXPECT_GE(macros, 20u);
     }
 }  // namespace ropras::scenarios::test
+
+namespace ropras::scenarios::test
+{
+    TEST(NavigationScenario, UniformTargetsAreGoalsThePlannerAccepts)
+    {
+        // maze2d grows its danger zones by danger_margin 1.5 for the planner; a uniform target inside that margin
+        // would only make the plan fail at an invalid goal. Cross-check every draw against the planner's own
+        // obstacles (ompl_ext::Environment, an independent distance computation).
+        const auto margins = navScenario("maze2d", {{"obstacle_margin", 0.5}});
+        const auto none = navScenario("maze2d", {{"danger_margin", 0.0}});
+        const auto &config = asNav(*margins).parts().model->config();
+        const auto planner = navigationEnvironment(config);
+        const NavigationTargetSpace withMargins(asNav(*margins).parts().model);
+        const NavigationTargetSpace withoutMargins(asNav(*none).parts().model);
+        pomdp::Rng rng(23);
+        std::size_t insideMargin = 0;
+        for (int i = 0; i < 3000; ++i)
+        {
+            NavTarget t{};
+            ASSERT_TRUE(withMargins.sampleFree(rng, t));
+            EXPECT_GE(planner->signedDistance(Eigen::Vector3d(t[0], t[1], 0.0), config.robotRadius), 0.0)
+                << "target (" << t[0] << ", " << t[1] << ") lies inside a planner margin";
+            ASSERT_TRUE(withoutMargins.sampleFree(rng, t));
+            insideMargin += planner->signedDistance(Eigen::Vector3d(t[0], t[1], 0.0), config.robotRadius) < 0.0;
+        }
+        // without margins a share of the draws falls where the margins are (about a tenth of the free area)
+        EXPECT_GT(insideMargin, 100u);
+    }
+}  // namespace ropras::scenarios::test

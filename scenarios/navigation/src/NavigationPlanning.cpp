@@ -1,5 +1,6 @@
 #include "ropras/scenarios/navigation/NavigationPlanning.h"
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 
@@ -28,6 +29,21 @@ namespace ropras::scenarios
             }
             bins_[k] = k < c.dims ? static_cast<std::size_t>(std::ceil(c.bounds.hi[k] - c.bounds.lo[k])) + 1 : 1;
         }
+        const auto grown = [&](const std::vector<NavBox> &boxes, double margin)
+        {
+            for (NavBox b : boxes)
+            {
+                for (int k = 0; k < c.dims; ++k)
+                {
+                    b.lo[k] -= margin;
+                    b.hi[k] += margin;
+                }
+                plannerBoxes_.push_back(b);
+            }
+        };
+        grown(c.walls, c.obstacleMargin);
+        grown(c.obstacles, c.obstacleMargin);
+        grown(c.dangerZones, c.dangerMargin);
     }
 
     double NavigationTargetSpace::distance(const NavState &a, const NavTarget &t) const
@@ -63,7 +79,9 @@ namespace ropras::scenarios
             {
                 s.p[k] = rng.uniform(c.bounds.lo[k], c.bounds.hi[k]);
             }
-            if (!model_->blocked(s.p) && !model_->inDanger(s.p))
+            const auto inMargin = [&](const NavBox &b) { return b.distance(s.p) < c.robotRadius; };
+            if (!model_->blocked(s.p) && !model_->inDanger(s.p) &&
+                std::none_of(plannerBoxes_.begin(), plannerBoxes_.end(), inMargin))
             {
                 out = {{s.p[0], s.p[1], s.p[2]}};
                 return true;

@@ -20,7 +20,9 @@ namespace ropras::scenarios
 
     /** \brief The informative states of a navigation scenario: goal = goal-box centre, informative =
         observation-zone centres, distance = Euclidean, entropy bin = the 1 m cell of the position,
-        sampleFree = a uniform point that is neither blocked nor in a danger zone. */
+        sampleFree = a uniform point that the reference planner accepts as a goal: the robot's sphere clears the
+        walls and obstacles grown by obstacle_margin and the danger zones grown by danger_margin (the planner's
+        boxes, navigationEnvironment), so uniform targets are not wasted on plans that fail at the goal. */
     class NavigationTargetSpace final : public pomdp::TargetSpace<NavState, NavTarget>
     {
     public:
@@ -38,6 +40,7 @@ namespace ropras::scenarios
         std::shared_ptr<const NavigationModel> model_;
         NavTarget goal_{};
         std::vector<NavTarget> informative_;
+        std::vector<NavBox> plannerBoxes_;  ///< what the planner sees, grown by the margins
         std::size_t bins_[3]{1, 1, 1};
     };
 
