@@ -1,8 +1,8 @@
 // `ropras plot FILES... --x KEY --y METRIC --out CHART.svg`: the JSON lines of `ropras run` as an SVG line chart.
-#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,7 +45,8 @@ namespace
             o.title.empty() ? sc::plotMetricLabel(metric) + " against " + sc::plotKeyLabel(o.x) : o.title;
         const bool rate = metric == sc::PlotMetric::SUCCESS;  // rates on the whole 0-100 % axis
         const std::string svg = sc::lineChartSvg(series, sc::plotKeyLabel(o.x), sc::plotMetricLabel(metric), title,
-                                                 o.logX, rate ? 0.0 : NAN, rate ? 100.0 : NAN);
+                                                 o.logX, rate ? std::optional<double>(0.0) : std::nullopt,
+                                                 rate ? std::optional<double>(100.0) : std::nullopt);
         std::ofstream file(o.out);
         file << svg;
         if (!file)

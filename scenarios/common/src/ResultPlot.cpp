@@ -274,8 +274,8 @@ namespace ropras::scenarios
     }
 
     std::string lineChartSvg(const std::vector<PlotSeries> &series, const std::string &xLabel,
-                             const std::string &yLabel, const std::string &title, bool logX, double yCoverLo,
-                             double yCoverHi)
+                             const std::string &yLabel, const std::string &title, bool logX,
+                             std::optional<double> yCoverLo, std::optional<double> yCoverHi)
     {
         double xLo = INFINITY, xHi = -INFINITY, yLo = INFINITY, yHi = -INFINITY;
         for (const auto &s : series)
@@ -294,10 +294,10 @@ namespace ropras::scenarios
             }
         if (!std::isfinite(xLo) || !std::isfinite(yLo))
             throw Error("nothing to plot: no point in any line");
-        if (std::isfinite(yCoverLo))
-            yLo = std::min(yLo, yCoverLo);
-        if (std::isfinite(yCoverHi))
-            yHi = std::max(yHi, yCoverHi);
+        if (yCoverLo)
+            yLo = std::min(yLo, *yCoverLo);
+        if (yCoverHi)
+            yHi = std::max(yHi, *yCoverHi);
         if (xHi - xLo < 1e-12)  // one key value: a window around it (half to twice it on a log scale)
         {
             const double half = logX ? std::log10(2.0) : (xLo != 0.0 ? 0.5 * std::abs(xLo) : 1.0);

@@ -1,9 +1,9 @@
 #ifndef ROPRAS_SCENARIOS_RESULT_PLOT_H
 #define ROPRAS_SCENARIOS_RESULT_PLOT_H
 
-#include <cmath>
 #include <cstddef>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,11 +74,12 @@ namespace ropras::scenarios
     /** \brief A standalone SVG line chart: one coloured line per series with markers and error bars of one
         standard error, axes with ticks and labels, a legend, \a title on top; \a logX draws x on a log10 scale
         (every x must then be > 0, else ropras::Error). The vertical axis spans the points and their error bars,
-        widened to cover [\a yCoverLo, \a yCoverHi] where those are finite (`ropras plot` gives 0 and 100 for
+        widened to cover [\a yCoverLo, \a yCoverHi] where those are given (`ropras plot` gives 0 and 100 for
         success, so rates are never drawn on a zoomed axis that makes a few points look like a cliff). */
     std::string lineChartSvg(const std::vector<PlotSeries> &series, const std::string &xLabel,
                              const std::string &yLabel, const std::string &title, bool logX = false,
-                             double yCoverLo = NAN, double yCoverHi = NAN);
+                             std::optional<double> yCoverLo = std::nullopt,
+                             std::optional<double> yCoverHi = std::nullopt);
 }  // namespace ropras::scenarios
 
 #endif
