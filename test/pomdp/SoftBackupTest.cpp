@@ -2,11 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
 #include "TestModels.h"
+#include "ropras/pomdp/ParameterMap.h"
 #include "ropras/pomdp/RandomMacroPolicy.h"
 #include "ropras/pomdp/RopRas3Solver.h"
 
@@ -109,4 +112,66 @@ TEST(SoftBackupTest, SolverRootValueIsBatchValueOverChildren)
             EXPECT_EQ(result.action.front(), 2);
         }
     }
+}
+
+TEST(RopRas3SelectionTest, UcbConcentratesVisitsOnTheBestChildrenUniformSpreadsThem)
+{
+    // a bandit whose three arms pay -1, 0.5 and 1; random one-step macros, so the root's ~9 children repeat the
+    // arms. Uniform choice (Algorithm 2) gives every child about N / |C| visits; UCB1 gives the arms paying 1
+    // nearly all of them, and both read the same best action off the root.
+    auto model = std::make_shared<test::BanditModel>();
+    model->rewards[0] = -1.0;
+    model->rewards[1] = 0.5;
+    model->rewards[2] = 1.0;
+    struct Spread
+    {
+        double bestShare;       ///< share of the visits that went to children of the best arm
+        double bestChildShare;  ///< share of the children that are the best arm
+        std::size_t children;
+        std::uint32_t fewest;  ///< visits of the least visited child
+    };
+    const auto spread = [&](bool ucb)
+    {
+        RopRas3Settings settings;
+        settings.maxDepth = 0;
+        settings.rolloutSteps = 0;
+        settings.ucbSelection = ucb;
+        settings.ucbC = 0.5;
+        RopRas3Solver<test::BanditModel> solver(
+            model, std::make_unique<RandomMacroPolicy<test::BanditModel>>(model, 1, 1), settings);
+        const int particle = 0;
+        ropras::pomdp::Rng rng(17);
+        const auto result = solver.plan(BeliefView<int>{&particle, 1}, Budget::ofSimulations(4000), rng);
+        EXPECT_TRUE(result.valid);
+        EXPECT_EQ(result.action.front(), 2);
+        Spread out{0.0, 0.0, solver.rootChildren().size(), 4000};
+        for (const auto &c : solver.rootChildren())
+        {
+            out.bestShare += c.first == 1.0 ? c.second / 4000.0 : 0.0;
+            out.bestChildShare += c.first == 1.0 ? 1.0 / static_cast<double>(out.children) : 0.0;
+            out.fewest = std::min(out.fewest, c.second);
+        }
+        return out;
+    };
+    const Spread uniform = spread(false);
+    const Spread ucb = spread(true);
+    ASSERT_GE(uniform.children, 6u);
+    ASSERT_GE(ucb.children, 6u);
+    ASSERT_GT(uniform.bestChildShare, 0.0);
+    ASSERT_LT(uniform.bestChildShare, 0.7);
+    // uniform: the visits follow the children (the later children, admitted by the widening, have fewer)
+    EXPECT_NEAR(uniform.bestShare, uniform.bestChildShare, 0.2);
+    EXPECT_GT(ucb.bestShare, 0.9) << "UCB1 concentrates the visits on the best arm";
+    EXPECT_LT(ucb.fewest, 4000u / ucb.children / 4) << "UCB1 starves the worst children";
+
+    ParameterMap bad;
+    bad.set("ucb_select", 1);
+    bad.set("ucb_c", -1.0);
+    EXPECT_THROW(RopRas3Settings::fromParameters(bad), ropras::Error);
+    ParameterMap good;
+    good.set("ucb_select", 1);
+    good.set("ucb_c", 1000.0);
+    const auto parsed = RopRas3Settings::fromParameters(good);
+    EXPECT_TRUE(parsed.ucbSelection);
+    EXPECT_DOUBLE_EQ(parsed.ucbC, 1000.0);
 }

@@ -56,13 +56,19 @@ namespace ropras::pomdp
         bool independentEvaluation{false};
         /** \brief Executed action: false = argmax Q (default), true = sample pi*(a|b) ~ exp(eta Q). */
         bool sampleAction{false};
+        /** \brief Choice among existing children when no new one is due: false = uniform (Algorithm 2, i.e. the
+            reference policy's own frequencies), true = UCB1, argmax Q(ba) + ucbC sqrt(ln N(b) / N(ba)) (unvisited
+            children first), as POMCP / R-POMCP choose. An ablation: it departs from the paper's search. */
+        bool ucbSelection{false};
+        /** \brief UCB1's exploration constant (the reward range's order); used only with ucbSelection. */
+        double ucbC{1.0};
         /** \brief Measure time spent in the model and in the reference policy (two clock reads per call). */
         bool profile{false};
         /** \brief Memory cap of the tree (MiB): the search stops there and says so (SearchStatistics). */
         double maxTreeMegabytes{detail::DEFAULT_MAX_TREE_MB};
 
         /** \brief Reads eta, beta_a, alpha_a, beta_o, alpha_o, macro_observation, independent_eval, depth,
-            rollout_steps, max_particles, sample_action, profile, max_tree_mb;
+            rollout_steps, max_particles, sample_action, ucb_select, ucb_c, profile, max_tree_mb;
             throws ropras::Error for out-of-range values. */
         static RopRas3Settings fromParameters(const ParameterMap &p)
         {
@@ -81,6 +87,8 @@ namespace ropras::pomdp
             s.macroObservation = static_cast<MacroObservation>(mode);
             s.independentEvaluation = p.getCount("independent_eval", s.independentEvaluation ? 1 : 0, 1) != 0;
             s.sampleAction = p.getCount("sample_action", 0) != 0;
+            s.ucbSelection = p.getCount("ucb_select", 0, 1) != 0;
+            s.ucbC = p.get("ucb_c", s.ucbC);
             s.profile = p.getCount("profile", 0) != 0;
             s.maxTreeMegabytes = detail::maxTreeMegabytes(p, "ROP-RAS3");
             s.validate();
@@ -97,6 +105,10 @@ namespace ropras::pomdp
             {
                 throw Error("ROP-RAS3: beta_a = " + std::to_string(betaA) + ", alpha_a = " + std::to_string(alphaA) +
                             " must be > 0 and >= 0");
+            }
+            if (!(ucbC >= 0.0) || !std::isfinite(ucbC))
+            {
+                throw Error("ROP-RAS3: ucb_c = " + std::to_string(ucbC) + " must be >= 0");
             }
             if (!(betaO >= 0.0) || !std::isfinite(betaO) || !(alphaO >= 0.0) || !std::isfinite(alphaO))
             {
@@ -306,7 +318,30 @@ namespace ropras::pomdp
             {
                 return NONE;
             }
-            return childArena_.sample(beliefs_[b].children, rng);
+            return settings_.ucbSelection ? ucbChild(b) : childArena_.sample(beliefs_[b].children, rng);
+        }
+
+        /** \brief UCB1 over the children of \a b (the first unvisited child, if any). */
+        std::uint32_t ucbChild(std::uint32_t b) const noexcept
+        {
+            const double logN = std::log(static_cast<double>(std::max<std::uint32_t>(beliefs_[b].visits, 1)));
+            std::uint32_t best = NONE;
+            double bestScore = -std::numeric_limits<double>::infinity();
+            for (const std::uint32_t a : childArena_.view(beliefs_[b].children))
+            {
+                if (actions_[a].visits == 0)
+                {
+                    return a;
+                }
+                const double score =
+                    actions_[a].q + settings_.ucbC * std::sqrt(logN / static_cast<double>(actions_[a].visits));
+                if (score > bestScore)
+                {
+                    bestScore = score;
+                    best = a;
+                }
+            }
+            return best;
         }
 
         std::uint32_t newAction(std::uint32_t b, const State &s, Rng &rng)
