@@ -11,6 +11,7 @@
 #include "ropras/pomdp/ModelRegistry.h"
 #include "ropras/pomdp/PomcpSolver.h"
 #include "ropras/pomdp/RopRas3Solver.h"
+#include "ropras/pomdp/SolverRunner.h"
 #include "ropras/pomdp/Tiger.h"
 
 using namespace ropras::pomdp;
@@ -256,4 +257,36 @@ TEST(SolverRegistryTest, RPomcpAndBPlanUseTheReferencePolicy)
         informed.plan(BeliefView<TigerModel::State>{left.data(), left.size()}, Budget::ofSimulations(1), rng);
     ASSERT_TRUE(open.valid);
     EXPECT_EQ(open.action, std::vector<TigerModel::Action>{TigerModel::OPEN_RIGHT});
+}
+
+TEST(SolverRegistryTest, SolverDefaultsApplyToTheirSolverOnlyAndYieldToTheUser)
+{
+    auto components = tigerComponents();
+    components.defaults["depth"] = 7;
+    components.solverDefaults["ropras3"] = {{"depth", 0}, {"beta_a", 8}, {"alpha_a", 0}};
+    components.solverDefaults["bplan"] = {{"depth", 3}};  // B-plan reads no depth: no unknown-parameter error
+    const auto ropras3 = makeSolver("ropras3", components, withDefaults(components, ParameterMap{}, "ropras3"));
+    const auto &own = dynamic_cast<const RopRas3Solver<TigerModel> &>(*ropras3).settings();
+    EXPECT_EQ(own.maxDepth, 0u);
+    EXPECT_EQ(own.betaA, 8.0);
+    EXPECT_EQ(own.alphaA, 0.0);
+    // Ref-Basic shares ROP-RAS3's settings but not its solver defaults: the shared depth, the solver's widening
+    const auto refbasic = makeSolver("refbasic", components, withDefaults(components, ParameterMap{}, "refbasic"));
+    const auto &shared = dynamic_cast<const RopRas3Solver<TigerModel> &>(*refbasic).settings();
+    EXPECT_EQ(shared.maxDepth, 7u);
+    EXPECT_EQ(shared.betaA, RopRas3Settings{}.betaA);
+    // the user's parameters override both
+    ParameterMap user;
+    user.set("depth", 2);
+    const auto mine = makeSolver("ropras3", components, withDefaults(components, user, "ropras3"));
+    EXPECT_EQ(dynamic_cast<const RopRas3Solver<TigerModel> &>(*mine).settings().maxDepth, 2u);
+    EXPECT_NO_THROW(makeSolver("bplan", components, withDefaults(components, ParameterMap{}, "bplan")));
+    // the names exempt from the unread-parameter check: every default the user did not set, shared and own
+    const auto exempt = unreadDefaultsAllowed(components, user, "ropras3");
+    EXPECT_EQ(exempt.count("depth"), 0u);
+    EXPECT_EQ(exempt.count("beta_a"), 1u);
+    EXPECT_EQ(exempt.count("ucb_c"), 1u);
+    // the runner (ropras pomdp-run) merges the same way: B-plan's own unread default is no error there either
+    EXPECT_NO_THROW(ModelSolverRunner<TigerModel>("tiger", components, "bplan", ParameterMap{}));
+    EXPECT_NO_THROW(ModelSolverRunner<TigerModel>("tiger", components, "ropras3", user));
 }

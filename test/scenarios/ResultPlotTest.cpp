@@ -105,6 +105,13 @@ namespace ropras::scenarios::test
         EXPECT_DOUBLE_EQ(s[0].points[1].x, 8.0);
         EXPECT_DOUBLE_EQ(s[0].points[1].y, 100.0);
         EXPECT_DOUBLE_EQ(plotKeyValue(t.records()[0], "beta_a", "x:1"), 2.0);
+        // a default of the record's own solver (config.solver_defaults) comes before the shared one
+        auto own = t.records()[1];
+        own["config"]["solver_defaults"] = {{"ropras3", {{"depth", 0}}}, {"rpomcp", {{"depth", 9}}}};
+        EXPECT_DOUBLE_EQ(plotKeyValue(own, "depth", "x:2"), 0.0);
+        EXPECT_DOUBLE_EQ(plotKeyValue(own, "beta_a", "x:2"), 2.0);
+        own["solver"] = "bplan";
+        EXPECT_DOUBLE_EQ(plotKeyValue(own, "depth", "x:2"), 4.0);
         expectErrorMentions([&] { plotKeyValue(t.records()[0], "dpth", "x:1"); }, {"x:1", "\"dpth\""});
         expectErrorMentions([&] { plotKeyValue(t.records()[0], "plan_time", "x:1"); },
                             {"x:1", "no time budget", "plan_time_s"});

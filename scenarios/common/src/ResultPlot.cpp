@@ -184,6 +184,14 @@ namespace ropras::scenarios
         if (found)
             return param;
         const nlohmann::json config = record.value("config", nlohmann::json::object());
+        const nlohmann::json perSolver = config.value("solver_defaults", nlohmann::json::object());
+        if (perSolver.is_object() && record.contains("solver") && record["solver"].is_string())
+        {
+            const double own =
+                numberAt(perSolver.value(record["solver"].get<std::string>(), nlohmann::json::object()), key, found);
+            if (found)
+                return own;
+        }
         const double fallback = numberAt(config.value("defaults", nlohmann::json::object()), key, found);
         if (found)
             return fallback;

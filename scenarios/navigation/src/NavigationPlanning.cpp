@@ -270,6 +270,7 @@ namespace ropras::scenarios
         parts.configuration = [dims = config.dims](const NavState &s, std::vector<double> &q)
         { q.insert(q.end(), s.p, s.p + dims); };
         parts.defaults = config.defaults;
+        parts.solverDefaults = config.solverDefaults;
         parts.horizon = config.horizon;
         parts.defaultPlanSeconds = config.planSeconds;
         parts.config = config.json;

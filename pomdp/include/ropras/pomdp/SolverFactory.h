@@ -38,6 +38,10 @@ namespace ropras::pomdp
         /** \brief Model-specific parameter defaults (e.g. ucb_c scaled to the reward range, depth); user
             parameters override them. */
         std::map<std::string, double> defaults;
+        /** \brief Per solver name: defaults for that solver only, taking precedence over \a defaults (e.g. a
+            scenario whose ROP-RAS3 searches one macro level while R-POMCP keeps its deeper tree); user
+            parameters override them too. */
+        std::map<std::string, std::map<std::string, double>> solverDefaults;
     };
 
     namespace detail
@@ -136,24 +140,61 @@ namespace ropras::pomdp
         return names;
     }
 
-    /** \brief \a params with the model's defaults filled in for names the user did not give. */
+    /** \brief \a params with the model's defaults filled in for names the user did not give: first those of
+        solver \a solver (ModelComponents::solverDefaults), then the shared ones. */
     template <class M>
-    ParameterMap withDefaults(const ModelComponents<M> &components, const ParameterMap &params)
+    ParameterMap withDefaults(const ModelComponents<M> &components, const ParameterMap &params,
+                              const std::string &solver = std::string())
     {
         ParameterMap merged = params;
-        for (const auto &entry : components.defaults)
+        const auto fill = [&merged](const std::map<std::string, double> &defaults)
         {
-            if (!merged.contains(entry.first))
+            for (const auto &entry : defaults)
             {
-                merged.set(entry.first, entry.second);
+                if (!merged.contains(entry.first))
+                {
+                    merged.set(entry.first, entry.second);
+                }
             }
+        };
+        const auto own = components.solverDefaults.find(solver);
+        if (own != components.solverDefaults.end())
+        {
+            fill(own->second);
         }
+        fill(components.defaults);
         return merged;
     }
 
+    /** \brief The names of the defaults that apply to solver \a solver (shared and its own) that the user did
+        not set in \a params: a solver may leave them unread (e.g. ucb_c for B-plan) without an error. */
+    template <class M>
+    std::set<std::string> unreadDefaultsAllowed(const ModelComponents<M> &components, const ParameterMap &params,
+                                                const std::string &solver)
+    {
+        std::set<std::string> exempt;
+        const auto add = [&](const std::map<std::string, double> &defaults)
+        {
+            for (const auto &entry : defaults)
+            {
+                if (!params.contains(entry.first))
+                {
+                    exempt.insert(entry.first);
+                }
+            }
+        };
+        add(components.defaults);
+        const auto own = components.solverDefaults.find(solver);
+        if (own != components.solverDefaults.end())
+        {
+            add(own->second);
+        }
+        return exempt;
+    }
+
     /** \brief Builds solver \a name (ropras3, refbasic, pomcp, rpomcp, bplan, rbss) for a model. \a params
-        must already contain the defaults (withDefaults()). Unknown solver names throw ropras::Error, and so does
-        a parameter that neither the solver, its reference policy, the particle filter
+        must already contain that solver's defaults (withDefaults()). Unknown solver names throw ropras::Error,
+        and so does a parameter that neither the solver, its reference policy, the particle filter
         (ParticleFilterSettings::fromParameters) nor the model's defaults know: a misspelt name ("dpth") is an
         error listing the valid names, never silently the default. */
     template <class M>
@@ -172,12 +213,8 @@ namespace ropras::pomdp
         }
         auto solver = it->second(components, params);
         ParticleFilterSettings::fromParameters(params);  // the filter's names are valid for every solver
-        std::set<std::string> exempt;                    // the model's defaults: not read by every solver
-        for (const auto &entry : components.defaults)
-        {
-            exempt.insert(entry.first);
-        }
-        params.requireAllUsed("solver " + name, exempt);
+        // the model's defaults (shared and this solver's): not read by every solver
+        params.requireAllUsed("solver " + name, unreadDefaultsAllowed(components, ParameterMap{}, name));
         return solver;
     }
 }  // namespace ropras::pomdp

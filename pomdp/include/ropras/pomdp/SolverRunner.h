@@ -39,22 +39,15 @@ namespace ropras::pomdp
                           const ParameterMap &params)
             : modelName_(std::move(modelName)), components_(std::move(components))
         {
-            const ParameterMap merged = withDefaults(components_, params);
+            const ParameterMap merged = withDefaults(components_, params, solverName);
             solver_ = makeSolver(solverName, components_, merged);
             filterSettings_ = ParticleFilterSettings::fromParameters(merged);
             if (filterSettings_.reinvigorate && !hasReinvigorate<M>)
             {
                 throw Error("parameter reinvigorate = 1, but model " + modelName_ + " has no reinvigorate()");
             }
-            std::set<std::string> exempt;
-            for (const auto &entry : components_.defaults)
-            {
-                if (!params.contains(entry.first))
-                {
-                    exempt.insert(entry.first);
-                }
-            }
-            merged.requireAllUsed("solver " + solverName + " on model " + modelName_, exempt);
+            merged.requireAllUsed("solver " + solverName + " on model " + modelName_,
+                                  unreadDefaultsAllowed(components_, params, solverName));
         }
 
         std::string modelName() const override { return modelName_; }

@@ -1,6 +1,7 @@
 #ifndef ROPRAS_SCENARIOS_MODEL_SCENARIO_H
 #define ROPRAS_SCENARIOS_MODEL_SCENARIO_H
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -64,6 +65,8 @@ namespace ropras::scenarios
         std::function<std::unique_ptr<pomdp::DepletionRecovery<M>>()> recovery;
         /// solver and filter parameter defaults of this scenario (the user's --param values override them)
         std::map<std::string, double> defaults;
+        /// per solver name: its own defaults, taking precedence over \a defaults (config key "solver_defaults")
+        std::map<std::string, std::map<std::string, double>> solverDefaults;
         std::size_t horizon{100};
         double defaultPlanSeconds{0.1};
         nlohmann::json config;
@@ -295,6 +298,20 @@ namespace ropras::scenarios
             {
                 throw Error("scenario " + parts_.name + ": incomplete parts (model, reference policy, world, points)");
             }
+            const auto known = pomdp::solverNames<M>();
+            for (const auto &entry : parts_.solverDefaults)
+            {
+                if (std::find(known.begin(), known.end(), entry.first) == known.end())
+                {
+                    std::string list;
+                    for (const auto &name : known)
+                    {
+                        list += (list.empty() ? "" : ", ") + name;
+                    }
+                    throw Error("scenario " + parts_.name + ": key \"solver_defaults." + entry.first +
+                                "\" names no solver (known: " + list + ")");
+                }
+            }
         }
 
         std::string name() const override { return parts_.name; }
@@ -363,6 +380,7 @@ namespace ropras::scenarios
             pomdp::ModelComponents<M> components;
             components.model = parts_.model;
             components.defaults = parts_.defaults;
+            components.solverDefaults = parts_.solverDefaults;
             const auto &policy = parts_.referencePolicy;
             components.referencePolicy = [&settings, &policy, plannerSeed](const pomdp::ParameterMap &p)
             { return policy(settings, p, plannerSeed); };
@@ -372,19 +390,12 @@ namespace ropras::scenarios
                 components.basicReferencePolicy = [&settings, &basic, plannerSeed](const pomdp::ParameterMap &p)
                 { return basic(settings, p, plannerSeed); };
             }
-            const pomdp::ParameterMap merged = pomdp::withDefaults(components, settings.params);
+            const pomdp::ParameterMap merged = pomdp::withDefaults(components, settings.params, settings.solver);
             Built out;
             out.solver = pomdp::makeSolver(settings.solver, components, merged);
             out.filter = pomdp::ParticleFilterSettings::fromParameters(merged);
-            std::set<std::string> exempt;
-            for (const auto &entry : components.defaults)
-            {
-                if (!settings.params.contains(entry.first))
-                {
-                    exempt.insert(entry.first);
-                }
-            }
-            merged.requireAllUsed("solver " + settings.solver + " on scenario " + parts_.name, exempt);
+            merged.requireAllUsed("solver " + settings.solver + " on scenario " + parts_.name,
+                                  pomdp::unreadDefaultsAllowed(components, settings.params, settings.solver));
             return out;
         }
 

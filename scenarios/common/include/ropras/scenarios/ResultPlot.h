@@ -28,7 +28,8 @@ namespace ropras::scenarios
     /** \brief The horizontal value of one episode record for key \a key: "sims" = the simulation budget per
         call (`--sims`), "plan_time" = the time budget per call (`--plan-time`, or the scenario's default),
         "epsilon" = the heuristic's epsilon, "sims_per_call" / "plan_time_s" = the measured means, any other
-        name = that `--param` of the record, else the scenario's default of that name (config.defaults), else a
+        name = that `--param` of the record, else the scenario's default of that name for the record's solver
+        (config.solver_defaults.SOLVER, then config.defaults), else a
         number of its configuration. Throws ropras::Error naming \a source and the key when the record has no
         such number (or a zero budget for sims / plan_time). */
     double plotKeyValue(const nlohmann::json &record, const std::string &key, const std::string &source);

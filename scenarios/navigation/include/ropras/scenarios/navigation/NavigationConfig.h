@@ -82,7 +82,9 @@ namespace ropras::scenarios
         bool terminationEvidence{false};
         double plannerRange{2.0};                ///< VectorizedRRTConnect extension step (m)
         std::map<std::string, double> defaults;  ///< solver / filter parameter defaults
-        nlohmann::json json;                     ///< the effective configuration
+        /// per solver name: its own defaults, before `defaults` (key solver_defaults; may be absent)
+        std::map<std::string, std::map<std::string, double>> solverDefaults;
+        nlohmann::json json;  ///< the effective configuration
     };
 
     /** \brief Reads and validates a navigation configuration; throws ropras::Error naming \a scenario, the key
