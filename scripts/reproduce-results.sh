@@ -49,8 +49,8 @@ for k in 1 2 3 4; do
   run r$k-refbasic 4 $S --solver refbasic
   run r$k-pomcp 2 $S --solver pomcp
 done
-for group in ld mz r md; do
-  "$R" table "$group"-*.jsonl
+for group in ld mz 'r[1-4]' md; do
+  "$R" table $group-*.jsonl
 done
 # stretch-crossing: its own table (collisions and too-close steps from the recordings)
 ROPRAS="$R" "$here/scripts/crossing-results.sh" --episodes 30 --seed 1 --threads 2 --out crossing

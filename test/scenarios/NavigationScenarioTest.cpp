@@ -300,3 +300,49 @@ namespace ropras::scenarios::test
         EXPECT_GT(insideMargin, 100u);
     }
 }  // namespace ropras::scenarios::test
+
+namespace ropras::scenarios::test
+{
+    TEST(NavigationScenario, SolverDefaultsAreCheckedAndApplyToTheirSolver)
+    {
+        // maze2d's ROP-RAS3 searches one macro level with nine candidate macros; the other solvers keep the
+        // shared defaults (depth 4, beta_a 2)
+        const auto &parts = asNav(*navScenario("maze2d")).parts();
+        EXPECT_EQ(parts.solverDefaults.at("ropras3").at("depth"), 0.0);
+        EXPECT_EQ(parts.solverDefaults.at("ropras3").at("beta_a"), 8.0);
+        EXPECT_EQ(parts.solverDefaults.at("ropras3").at("alpha_a"), 0.0);
+        EXPECT_EQ(parts.defaults.at("depth"), 4.0);
+        EXPECT_EQ(parts.solverDefaults.count("rpomcp"), 0u);
+        // --config overrides a solver default like any other key; --param still overrides both at run time
+        const auto deeper = navScenario("maze2d", {{"solver_defaults", {{"ropras3", {{"depth", 2}}}}}});
+        EXPECT_EQ(asNav(*deeper).parts().solverDefaults.at("ropras3").at("depth"), 2.0);
+        RunSettings settings;
+        settings.solver = "ropras3";
+        settings.params.set("depth", 1);
+        EXPECT_NO_THROW(deeper->validate(settings));
+        settings.solver = "bplan";  // reads no depth, beta_a nor alpha_a: not an unknown-parameter error
+        settings.params = pomdp::ParameterMap{};
+        EXPECT_NO_THROW(deeper->validate(settings));
+
+        // bad solver_defaults in a scenario file: the key and the problem are named
+        const nlohmann::json base = navScenario("maze2d")->config();
+        const auto withSolverDefaults = [&](const nlohmann::json &value)
+        {
+            nlohmann::json config = base;
+            config["solver_defaults"] = value;
+            return [config] { makeNavigationScenario("maze2d", "test", "navigation/maze2d", config); };
+        };
+        expectErrorMentions(withSolverDefaults({{"nosuch", {{"depth", 0}}}}),
+                            {"solver_defaults.nosuch", "names no solver", "ropras3"});
+        expectErrorMentions(withSolverDefaults(5), {"solver_defaults", "must be an object"});
+        expectErrorMentions(withSolverDefaults({{"ropras3", 3}}), {"solver_defaults.ropras3", "must be an object"});
+        expectErrorMentions(withSolverDefaults({{"ropras3", {{"depth", "deep"}}}}), {"solver_defaults.ropras3.depth"});
+        expectErrorMentions(
+            [] {
+                navScenario("maze2d", {{"solver_defaults", {{"nosuch", {{"depth", 0}}}}}});
+            },
+            {"solver_defaults.nosuch"});
+        // absent (Light-Dark has none): no solver defaults
+        EXPECT_TRUE(asNav(*navScenario("light-dark")).parts().solverDefaults.empty());
+    }
+}  // namespace ropras::scenarios::test
