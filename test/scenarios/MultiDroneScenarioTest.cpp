@@ -296,3 +296,31 @@ namespace ropras::scenarios
         EXPECT_THROW(scenario->validate(settings), Error);
     }
 }  // namespace ropras::scenarios
+
+namespace ropras::scenarios
+{
+    TEST(MultiDroneScenarioTest, RopRas3HasItsOwnDefaults)
+    {
+        // ROP-RAS3 compares nine candidate macro-actions over one macro level; R-POMCP keeps depth 3
+        const auto parts = multiDroneParts();
+        EXPECT_EQ(parts.solverDefaults.at("ropras3").at("depth"), 0.0);
+        EXPECT_EQ(parts.solverDefaults.at("ropras3").at("beta_a"), 8.0);
+        EXPECT_EQ(parts.solverDefaults.at("ropras3").at("alpha_a"), 0.0);
+        EXPECT_EQ(parts.defaults.at("depth"), 3.0);
+        EXPECT_EQ(parts.solverDefaults.count("rpomcp"), 0u);
+        ScenarioOptions deeper;
+        deeper.overrides = {{"solver_defaults", {{"ropras3", {{"depth", 2}}}}}};
+        EXPECT_EQ(multiDroneParts(deeper).solverDefaults.at("ropras3").at("depth"), 2.0);
+        ScenarioOptions bad;
+        bad.overrides = {{"solver_defaults", {{"ropras3", {{"depth", "deep"}}}}}};
+        try
+        {
+            multiDroneParts(bad);
+            ADD_FAILURE() << "a non-numeric solver default was accepted";
+        }
+        catch (const Error &e)
+        {
+            EXPECT_NE(std::string(e.what()).find("solver_defaults.ropras3.depth"), std::string::npos) << e.what();
+        }
+    }
+}  // namespace ropras::scenarios

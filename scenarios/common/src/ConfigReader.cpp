@@ -171,4 +171,31 @@ namespace ropras::scenarios
         }
         return out;
     }
+    std::map<std::string, std::map<std::string, double>> ConfigReader::solverDefaults() const
+    {
+        std::map<std::string, std::map<std::string, double>> out;
+        if (!json_.contains("solver_defaults"))
+        {
+            return out;
+        }
+        const auto &perSolver = at("solver_defaults");
+        if (!perSolver.is_object())
+        {
+            fail("solver_defaults", "must be an object {solver: {parameter: number}}, not " + perSolver.dump());
+        }
+        for (const auto &solver : perSolver.items())
+        {
+            const std::string key = "solver_defaults." + solver.key();
+            if (!solver.value().is_object())
+            {
+                fail(key, "must be an object of solver parameters, not " + solver.value().dump());
+            }
+            auto &own = out[solver.key()];
+            for (const auto &item : solver.value().items())
+            {
+                own[item.key()] = number(key + "." + item.key(), item.value());
+            }
+        }
+        return out;
+    }
 }  // namespace ropras::scenarios

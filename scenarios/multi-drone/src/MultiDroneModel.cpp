@@ -45,7 +45,7 @@ namespace ropras::scenarios
     {
         const ConfigReader r(scenario, json);
         auto known = modelKeys();
-        known.insert({"planning", "defaults"});
+        known.insert({"planning", "defaults", "solver_defaults"});
         r.requireKnown(known);
         MultiDroneConfig c;
         const auto bounds = r.rows("bounds", 3);

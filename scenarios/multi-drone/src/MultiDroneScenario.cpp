@@ -8,6 +8,7 @@
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/scene/Environment.h"
 #include "ropras/pomdp/OmplReferencePolicy.h"
+#include "ropras/scenarios/ConfigReader.h"
 #include "ropras/scenarios/multi-drone/MultiDronePlanning.h"
 #include "ropras/scenarios/multi-drone/MultiDroneWorld.h"
 
@@ -68,6 +69,7 @@ namespace ropras::scenarios
             }
             parts.defaults[item.key()] = item.value().get<double>();
         }
+        parts.solverDefaults = ConfigReader(NAME, json).solverDefaults();
 
         auto model = std::make_shared<const MultiDroneModel>(config);
         parts.model = model;

@@ -167,27 +167,7 @@ namespace ropras::scenarios
         {
             c.defaults[item.key()] = r.number("defaults." + item.key(), item.value());
         }
-        if (json.contains("solver_defaults"))  // per solver (names checked by ModelScenario)
-        {
-            const auto &perSolver = r.at("solver_defaults");
-            if (!perSolver.is_object())
-            {
-                r.fail("solver_defaults", "must be an object {solver: {parameter: number}}, not " + perSolver.dump());
-            }
-            for (const auto &solver : perSolver.items())
-            {
-                const std::string key = "solver_defaults." + solver.key();
-                if (!solver.value().is_object())
-                {
-                    r.fail(key, "must be an object of solver parameters, not " + solver.value().dump());
-                }
-                auto &own = c.solverDefaults[solver.key()];
-                for (const auto &item : solver.value().items())
-                {
-                    own[item.key()] = r.number(key + "." + item.key(), item.value());
-                }
-            }
-        }
+        c.solverDefaults = r.solverDefaults();  // per solver (names checked by ModelScenario)
 
         // Boxes inside the bounds (the goal and every zone; walls and obstacles may touch the border).
         const auto inside = [&](const std::string &key, const NavBox &b)

@@ -2,6 +2,7 @@
 #define ROPRAS_SCENARIOS_CONFIG_READER_H
 
 #include <cstddef>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -43,6 +44,9 @@ namespace ropras::scenarios
         std::vector<double> numbers(const std::string &key, std::size_t n) const;
         /// an array of arrays of \a n finite numbers each (may be empty)
         std::vector<std::vector<double>> rows(const std::string &key, std::size_t n) const;
+        /** \brief The optional key "solver_defaults", {solver: {parameter: number}}: per-solver parameter
+            defaults (empty when absent; the solver names are checked by ModelScenario). */
+        std::map<std::string, std::map<std::string, double>> solverDefaults() const;
 
         const std::string &scenario() const { return scenario_; }
 
