@@ -11,6 +11,7 @@
 
 #include <ompl/util/Console.h>
 
+#include "ExpectError.h"
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/scene/Environment.h"
 #include "ropras/pomdp/OmplPathPlanner.h"
@@ -313,14 +314,6 @@ namespace ropras::scenarios
         EXPECT_EQ(multiDroneParts(deeper).solverDefaults.at("ropras3").at("depth"), 2.0);
         ScenarioOptions bad;
         bad.overrides = {{"solver_defaults", {{"ropras3", {{"depth", "deep"}}}}}};
-        try
-        {
-            multiDroneParts(bad);
-            ADD_FAILURE() << "a non-numeric solver default was accepted";
-        }
-        catch (const Error &e)
-        {
-            EXPECT_NE(std::string(e.what()).find("solver_defaults.ropras3.depth"), std::string::npos) << e.what();
-        }
+        ropras::test::expectErrorMentions([&] { multiDroneParts(bad); }, {"solver_defaults.ropras3.depth"});
     }
 }  // namespace ropras::scenarios

@@ -171,6 +171,7 @@ namespace ropras::scenarios
         }
         return out;
     }
+
     std::map<std::string, std::map<std::string, double>> ConfigReader::solverDefaults() const
     {
         std::map<std::string, std::map<std::string, double>> out;

@@ -31,14 +31,9 @@ namespace ropras::scenarios
         }
         const auto grown = [&](const std::vector<NavBox> &boxes, double margin)
         {
-            for (NavBox b : boxes)
+            for (const NavBox &b : boxes)
             {
-                for (int k = 0; k < c.dims; ++k)
-                {
-                    b.lo[k] -= margin;
-                    b.hi[k] += margin;
-                }
-                plannerBoxes_.push_back(b);
+                plannerBoxes_.push_back(b.grown(margin, c.dims));
             }
         };
         grown(c.walls, c.obstacleMargin);
@@ -79,9 +74,9 @@ namespace ropras::scenarios
             {
                 s.p[k] = rng.uniform(c.bounds.lo[k], c.bounds.hi[k]);
             }
+            // the planner's boxes contain the true ones: a clear point is neither blocked nor in danger
             const auto inMargin = [&](const NavBox &b) { return b.distance(s.p) < c.robotRadius; };
-            if (!model_->blocked(s.p) && !model_->inDanger(s.p) &&
-                std::none_of(plannerBoxes_.begin(), plannerBoxes_.end(), inMargin))
+            if (std::none_of(plannerBoxes_.begin(), plannerBoxes_.end(), inMargin))
             {
                 out = {{s.p[0], s.p[1], s.p[2]}};
                 return true;
@@ -199,13 +194,9 @@ namespace ropras::scenarios
         {
             for (std::size_t i = 0; i < boxes.size(); ++i)
             {
-                const auto &b = boxes[i];
+                const NavBox b = boxes[i].grown(grow, config.dims);
                 const auto c = b.center();
-                Eigen::Vector3d size(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]);
-                for (int k = 0; k < config.dims; ++k)
-                {
-                    size[k] += 2.0 * grow;
-                }
+                const Eigen::Vector3d size(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]);
                 env->addBox(prefix + std::to_string(i), Eigen::Isometry3d(Eigen::Translation3d(c[0], c[1], c[2])),
                             size);
             }

@@ -140,54 +140,51 @@ namespace ropras::pomdp
         return names;
     }
 
-    /** \brief \a params with the model's defaults filled in for names the user did not give: first those of
-        solver \a solver (ModelComponents::solverDefaults), then the shared ones. */
+    /** \brief The defaults that apply to solver \a solver: its own (ModelComponents::solverDefaults) over the
+        shared ones. */
+    template <class M>
+    std::map<std::string, double> defaultsFor(const ModelComponents<M> &components, const std::string &solver)
+    {
+        std::map<std::string, double> out;
+        const auto own = components.solverDefaults.find(solver);
+        if (own != components.solverDefaults.end())
+        {
+            out = own->second;
+        }
+        out.insert(components.defaults.begin(), components.defaults.end());  // keeps the solver's own values
+        return out;
+    }
+
+    /** \brief \a params with solver \a solver's defaults (defaultsFor()) filled in for names the user did not
+        give. */
     template <class M>
     ParameterMap withDefaults(const ModelComponents<M> &components, const ParameterMap &params,
                               const std::string &solver = std::string())
     {
         ParameterMap merged = params;
-        const auto fill = [&merged](const std::map<std::string, double> &defaults)
+        for (const auto &entry : defaultsFor(components, solver))
         {
-            for (const auto &entry : defaults)
+            if (!merged.contains(entry.first))
             {
-                if (!merged.contains(entry.first))
-                {
-                    merged.set(entry.first, entry.second);
-                }
+                merged.set(entry.first, entry.second);
             }
-        };
-        const auto own = components.solverDefaults.find(solver);
-        if (own != components.solverDefaults.end())
-        {
-            fill(own->second);
         }
-        fill(components.defaults);
         return merged;
     }
 
-    /** \brief The names of the defaults that apply to solver \a solver (shared and its own) that the user did
-        not set in \a params: a solver may leave them unread (e.g. ucb_c for B-plan) without an error. */
+    /** \brief The names of solver \a solver's defaults (defaultsFor()) that the user did not set in \a params:
+        a solver may leave them unread (e.g. ucb_c for B-plan) without an error. */
     template <class M>
     std::set<std::string> unreadDefaultsAllowed(const ModelComponents<M> &components, const ParameterMap &params,
                                                 const std::string &solver)
     {
         std::set<std::string> exempt;
-        const auto add = [&](const std::map<std::string, double> &defaults)
+        for (const auto &entry : defaultsFor(components, solver))
         {
-            for (const auto &entry : defaults)
+            if (!params.contains(entry.first))
             {
-                if (!params.contains(entry.first))
-                {
-                    exempt.insert(entry.first);
-                }
+                exempt.insert(entry.first);
             }
-        };
-        add(components.defaults);
-        const auto own = components.solverDefaults.find(solver);
-        if (own != components.solverDefaults.end())
-        {
-            add(own->second);
         }
         return exempt;
     }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "ropras/core/Error.h"
+#include "ropras/core/NameList.h"
 #include "ropras/pomdp/Episode.h"
 #include "ropras/pomdp/OmplPathPlanner.h"
 #include "ropras/pomdp/ParticleFilter.h"
@@ -303,13 +304,8 @@ namespace ropras::scenarios
             {
                 if (std::find(known.begin(), known.end(), entry.first) == known.end())
                 {
-                    std::string list;
-                    for (const auto &name : known)
-                    {
-                        list += (list.empty() ? "" : ", ") + name;
-                    }
                     throw Error("scenario " + parts_.name + ": key \"solver_defaults." + entry.first +
-                                "\" names no solver (known: " + list + ")");
+                                "\" names no solver (known: " + joinNames(known) + ")");
                 }
             }
         }

@@ -27,6 +27,17 @@ namespace ropras::scenarios
         {
             return p[0] >= lo[0] && p[0] <= hi[0] && p[1] >= lo[1] && p[1] <= hi[1] && p[2] >= lo[2] && p[2] <= hi[2];
         }
+        /// the box grown by \a margin per side on the first \a dims axes
+        NavBox grown(double margin, int dims) const noexcept
+        {
+            NavBox b = *this;
+            for (int k = 0; k < dims; ++k)
+            {
+                b.lo[k] -= margin;
+                b.hi[k] += margin;
+            }
+            return b;
+        }
         /// Euclidean distance from the point to the box (0 inside)
         double distance(const double *p) const noexcept
         {
