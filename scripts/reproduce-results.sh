@@ -1,56 +1,86 @@
 #!/usr/bin/env bash
-# Reproduces the tables of doc/results.md: every scenario x solver, 30 episodes (fewer for the solvers whose
-# episodes cost 80 s each, see doc/results.md), at a tenth of the paper's planning time per call.
+# Reproduces the navigation tables of doc/results.md: every scenario x solver, 30 episodes (fewer for the solvers
+# whose episodes run to the horizon, see doc/results.md), seed 1, 2 threads.
 # Usage: scripts/reproduce-results.sh [OUT_DIR] (default: results/); then `ropras table OUT_DIR/<prefix>-*.jsonl`.
-# About 35 minutes on a 2-core machine.
+# Environment:
+#   BUDGET=tenth (default) a tenth of the paper's planning time per call (each scenario's default: Light-Dark
+#                0.01 s, the others 0.1 s); about 35 minutes on a 2-core machine
+#   BUDGET=paper the paper's own time per call (Light-Dark 0.1 s, the others 1 s); about ten times as long
+#   SCENARIOS    the scenarios to run, any of "light-dark multi-drone maze2d random3d stretch-crossing" (default:
+#                all of them; random3d stands for its four problems)
+#   SOLVERS      the solvers to run, any of "ropras3 rpomcp bplan pomcp refbasic" (default: all of them)
+#   ROPRAS       the ropras executable (default: build/bin/ropras)
 set -u
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 R=${ROPRAS:-$here/build/bin/ropras}
 out=${1:-results}
+budget=${BUDGET:-tenth}
+scenarios=" ${SCENARIOS:-light-dark multi-drone maze2d random3d stretch-crossing} "
+solvers=" ${SOLVERS:-ropras3 rpomcp bplan pomcp refbasic} "
+case "$budget" in
+  tenth) ld_time=() other_time=() ;;
+  paper) ld_time=(--plan-time 0.1) other_time=(--plan-time 1) ;;
+  *) echo "reproduce-results.sh: BUDGET must be tenth or paper, not '$budget'" >&2; exit 2 ;;
+esac
+[ -x "$R" ] || { echo "reproduce-results.sh: no ropras executable at $R" >&2; exit 2; }
 mkdir -p "$out"
 cd "$out"
-run() { # name episodes args...
-  local name=$1 n=$2
+wanted() { [[ "$scenarios" == *" $1 "* ]]; }
+run() { # name episodes args... (--solver S among them)
+  local name=$1 n=$2 solver
   shift 2
+  solver=$(printf '%s\n' "$@" | grep -A1 -x -- --solver | tail -n 1)
+  [[ "$solvers" == *" $solver "* ]] || return 0
   "$R" run --episodes "$n" --threads 2 --seed 1 --quiet --out "$name.jsonl" "$@" > "$name.table"
 }
 echo '{"termination_evidence": true}' > termination-evidence.json
 
-LD="--scenario light-dark"
-run ld-ropras3-d 30 $LD --solver ropras3
-run ld-ropras3-u 30 $LD --solver ropras3 --heuristic uniform
-run ld-rpomcp-d 30 $LD --solver rpomcp
-run ld-bplan-d 30 $LD --solver bplan
-run ld-pomcp 30 $LD --solver pomcp
-run ld-refbasic 30 $LD --solver refbasic
-run ld-te-ropras3-d 30 $LD --solver ropras3 --config termination-evidence.json
+if wanted light-dark; then
+  LD=(--scenario light-dark "${ld_time[@]}")
+  run ld-ropras3-d 30 "${LD[@]}" --solver ropras3
+  run ld-ropras3-u 30 "${LD[@]}" --solver ropras3 --heuristic uniform
+  run ld-rpomcp-d 30 "${LD[@]}" --solver rpomcp
+  run ld-bplan-d 30 "${LD[@]}" --solver bplan
+  run ld-pomcp 30 "${LD[@]}" --solver pomcp
+  run ld-refbasic 30 "${LD[@]}" --solver refbasic
+  run ld-te-ropras3-d 30 "${LD[@]}" --solver ropras3 --config termination-evidence.json
+fi
 
-MD="--scenario multi-drone"
-run md-ropras3-d 30 $MD --solver ropras3
-run md-rpomcp-d 30 $MD --solver rpomcp
-run md-bplan-d 30 $MD --solver bplan
-run md-refbasic 10 $MD --solver refbasic
-run md-pomcp 4 $MD --solver pomcp
+if wanted multi-drone; then
+  MD=(--scenario multi-drone "${other_time[@]}")
+  run md-ropras3-d 30 "${MD[@]}" --solver ropras3
+  run md-rpomcp-d 30 "${MD[@]}" --solver rpomcp
+  run md-bplan-d 30 "${MD[@]}" --solver bplan
+  run md-refbasic 10 "${MD[@]}" --solver refbasic
+  run md-pomcp 4 "${MD[@]}" --solver pomcp
+fi
 
-MZ="--scenario maze2d"
-run mz-ropras3-d 30 $MZ --solver ropras3
-run mz-ropras3-u 30 $MZ --solver ropras3 --heuristic uniform
-run mz-rpomcp-d 30 $MZ --solver rpomcp
-run mz-bplan-d 30 $MZ --solver bplan
-run mz-refbasic 10 $MZ --solver refbasic
-run mz-pomcp 4 $MZ --solver pomcp
-run mz-te-ropras3-d 30 $MZ --solver ropras3 --config termination-evidence.json
+if wanted maze2d; then
+  MZ=(--scenario maze2d "${other_time[@]}")
+  run mz-ropras3-d 30 "${MZ[@]}" --solver ropras3
+  run mz-ropras3-u 30 "${MZ[@]}" --solver ropras3 --heuristic uniform
+  run mz-rpomcp-d 30 "${MZ[@]}" --solver rpomcp
+  run mz-bplan-d 30 "${MZ[@]}" --solver bplan
+  run mz-refbasic 10 "${MZ[@]}" --solver refbasic
+  run mz-pomcp 4 "${MZ[@]}" --solver pomcp
+  run mz-te-ropras3-d 30 "${MZ[@]}" --solver ropras3 --config termination-evidence.json
+fi
 
-for k in 1 2 3 4; do
-  S="--scenario random3d-$k"
-  run r$k-ropras3-d 30 $S --solver ropras3
-  run r$k-bplan-d 30 $S --solver bplan
-  run r$k-rpomcp-d 30 $S --solver rpomcp
-  run r$k-refbasic 4 $S --solver refbasic
-  run r$k-pomcp 2 $S --solver pomcp
+if wanted random3d; then
+  for k in 1 2 3 4; do
+    S=(--scenario "random3d-$k" "${other_time[@]}")
+    run "r$k-ropras3-d" 30 "${S[@]}" --solver ropras3
+    run "r$k-bplan-d" 30 "${S[@]}" --solver bplan
+    run "r$k-rpomcp-d" 30 "${S[@]}" --solver rpomcp
+    run "r$k-refbasic" 4 "${S[@]}" --solver refbasic
+    run "r$k-pomcp" 2 "${S[@]}" --solver pomcp
+  done
+fi
+
+for group in ld md mz 'r[1-4]'; do
+  files=$(compgen -G "$group-*.jsonl") && "$R" table $files
 done
-for group in ld mz 'r[1-4]' md; do
-  "$R" table $group-*.jsonl
-done
-# stretch-crossing: its own table (collisions and too-close steps from the recordings)
-ROPRAS="$R" "$here/scripts/crossing-results.sh" --episodes 30 --seed 1 --threads 2 --out crossing
+# stretch-crossing: its own table (collisions and too-close steps from the recordings), at its own budget
+if wanted stretch-crossing; then
+  ROPRAS="$R" "$here/scripts/crossing-results.sh" --episodes 30 --seed 1 --threads 2 --out crossing
+fi
