@@ -35,15 +35,22 @@ run() { # name episodes args... (--solver S among them)
 }
 echo '{"termination_evidence": true}' > termination-evidence.json
 
+# The rows of Light-Dark and Maze2D: ROP-RAS3 (dynamic, uniform, with termination evidence), R-POMCP, B-plan, and
+# POMCP and Ref-Basic with their own episode counts. Usage: goal_rows PREFIX POMCP_EPISODES REFBASIC_EPISODES ARGS...
+goal_rows() {
+  local p=$1 pomcp_n=$2 refbasic_n=$3
+  shift 3
+  run "$p-ropras3-d" 30 "$@" --solver ropras3
+  run "$p-ropras3-u" 30 "$@" --solver ropras3 --heuristic uniform
+  run "$p-rpomcp-d" 30 "$@" --solver rpomcp
+  run "$p-bplan-d" 30 "$@" --solver bplan
+  run "$p-refbasic" "$refbasic_n" "$@" --solver refbasic
+  run "$p-pomcp" "$pomcp_n" "$@" --solver pomcp
+  run "$p-te-ropras3-d" 30 "$@" --solver ropras3 --config termination-evidence.json
+}
+
 if wanted light-dark; then
-  LD=(--scenario light-dark "${ld_time[@]}")
-  run ld-ropras3-d 30 "${LD[@]}" --solver ropras3
-  run ld-ropras3-u 30 "${LD[@]}" --solver ropras3 --heuristic uniform
-  run ld-rpomcp-d 30 "${LD[@]}" --solver rpomcp
-  run ld-bplan-d 30 "${LD[@]}" --solver bplan
-  run ld-pomcp 30 "${LD[@]}" --solver pomcp
-  run ld-refbasic 30 "${LD[@]}" --solver refbasic
-  run ld-te-ropras3-d 30 "${LD[@]}" --solver ropras3 --config termination-evidence.json
+  goal_rows ld 30 30 --scenario light-dark "${ld_time[@]}"
 fi
 
 if wanted multi-drone; then
@@ -56,14 +63,7 @@ if wanted multi-drone; then
 fi
 
 if wanted maze2d; then
-  MZ=(--scenario maze2d "${other_time[@]}")
-  run mz-ropras3-d 30 "${MZ[@]}" --solver ropras3
-  run mz-ropras3-u 30 "${MZ[@]}" --solver ropras3 --heuristic uniform
-  run mz-rpomcp-d 30 "${MZ[@]}" --solver rpomcp
-  run mz-bplan-d 30 "${MZ[@]}" --solver bplan
-  run mz-refbasic 10 "${MZ[@]}" --solver refbasic
-  run mz-pomcp 4 "${MZ[@]}" --solver pomcp
-  run mz-te-ropras3-d 30 "${MZ[@]}" --solver ropras3 --config termination-evidence.json
+  goal_rows mz 4 10 --scenario maze2d "${other_time[@]}"
 fi
 
 if wanted random3d; then
