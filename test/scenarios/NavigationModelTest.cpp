@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 
 #include "ExpectError.h"
@@ -292,6 +293,28 @@ namespace ropras::scenarios::test
         // off in Light-Dark: no leaf value
         const auto ld = navScenario("light-dark");
         EXPECT_EQ(asNav(*ld).parts().model->heuristicValue(at(-2.5, 2.5)), 0.0);
+        // off in Random3D (issue 14: the field's leaf value made the search put off risky passages); when switched
+        // on, the field is the discounted shortest safe lattice path, and 0 outside the bounds' reachable cells
+        for (const char *name : {"random3d-1", "random3d-2", "random3d-3", "random3d-4"})
+        {
+            const auto r3 = navScenario(name);
+            const auto &off = *asNav(*r3).parts().model;
+            const double *start = off.config().starts.front().data();
+            EXPECT_EQ(off.goalDistance(start), -1) << name;
+            EXPECT_EQ(off.heuristicValue(at(start[0], start[1], start[2])), 0.0) << name;
+            const auto on = navScenario(name, {{"heuristic_value", true}});
+            const auto &field = *asNav(*on).parts().model;
+            const long d = field.goalDistance(start);
+            // the field (a grid anchored at the bounds, the start rounded to its nearest cell: at most half a step
+            // per axis) agrees with the forward BFS from the start that avoids danger zones (H_min, 45-47 steps)
+            const auto hMin = static_cast<long>(shortestGoalSteps(field, at(start[0], start[1], start[2]), true));
+            EXPECT_GE(hMin, 40) << name;
+            EXPECT_LE(std::abs(d - hMin), 3) << name << ": field " << d << ", forward BFS " << hMin;
+            const double gd = std::pow(field.discount(), static_cast<double>(d));
+            EXPECT_NEAR(field.heuristicValue(at(start[0], start[1], start[2])),
+                        800.0 * gd - 0.1 * (1.0 - gd) / (1.0 - field.discount()), 1e-9)
+                << name;
+        }
         // a wall closing the first gap makes the goal unreachable: the BFS can fail
         const auto closed = navScenario("maze2d", {{"walls", {{{-12, -25}, {-11, 25}}}}});
         EXPECT_EQ(shortestGoalSteps(*asNav(*closed).parts().model, at(-20, 15), true), 0u);
