@@ -14,14 +14,15 @@ out=${1:-ablation-depth}
 budget=(--plan-time "${PLAN_TIME:-0.3}")
 if [ -n "${SIMS:-}" ]; then budget=(--sims "$SIMS"); fi
 common=(--episodes "${EPISODES:-30}" --seed "${SEED:-1}" --threads "${THREADS:-1}" --quiet "${budget[@]}")
+depths=${DEPTHS:-0 1 2 4 8 16}
+log_x=(--log-x)
+[[ " $depths " == *" 0 "* ]] && log_x=()  # a logarithmic axis cannot show depth 0
 mkdir -p "$out"
 for scenario in ${SCENARIOS:-maze2d multi-drone}; do
-  for depth in ${DEPTHS:-0 1 2 4 8 16}; do
+  for depth in $depths; do
     "$R" run --scenario "$scenario" --solver ropras3 --heuristic uniform --param depth="$depth" "${common[@]}" \
       --out "$out/$scenario-depth$depth.jsonl" > /dev/null
   done
-  log_x=(--log-x)
-  [[ " ${DEPTHS:-0 1 2 4 8 16} " == *" 0 "* ]] && log_x=()
   "$R" plot "$out/$scenario"-depth*.jsonl --x depth --y success "${log_x[@]}" \
     --title "$scenario: success against tree depth (ROP-RAS3, uniform heuristic)" --out "$out/$scenario-depth.svg"
 done

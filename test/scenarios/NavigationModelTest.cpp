@@ -270,6 +270,17 @@ namespace ropras::scenarios::test
         EXPECT_NEAR(sq / 4000, 0.16, 0.16 * 0.12);
     }
 
+    namespace
+    {
+        /** The distance field's leaf value d lattice steps from the goal, with Maze2D's and Random3D's rewards (goal
+            800, step -0.1): goal_reward·γ^d + step_reward·(1 − γ^d)/(1 − γ). */
+        double fieldValue(double g, std::size_t d)
+        {
+            const double gd = std::pow(g, static_cast<double>(d));
+            return 800.0 * gd - 0.1 * (1.0 - gd) / (1.0 - g);
+        }
+    }  // namespace
+
     TEST(NavigationModel, Maze2DNeedsAHundredStepsAndHasADangerFreePath)
     {
         const auto scenario = navScenario("maze2d", {{"slip", 0.0}});
@@ -286,38 +297,40 @@ namespace ropras::scenarios::test
             EXPECT_LE(safe, 400u);
             // the heuristic value's distance field (a multi-source BFS from the goal) agrees with the forward BFS
             EXPECT_EQ(model.goalDistance(start.data()), static_cast<long>(safe));
-            const double g = model.discount();
-            const double gd = std::pow(g, static_cast<double>(safe));
-            EXPECT_NEAR(model.heuristicValue(at(start[0], start[1])), 800.0 * gd - 0.1 * (1.0 - gd) / (1.0 - g), 1e-9);
+            EXPECT_NEAR(model.heuristicValue(at(start[0], start[1])), fieldValue(model.discount(), safe), 1e-9);
         }
         // off in Light-Dark: no leaf value
         const auto ld = navScenario("light-dark");
         EXPECT_EQ(asNav(*ld).parts().model->heuristicValue(at(-2.5, 2.5)), 0.0);
-        // off in Random3D (issue 14: the field's leaf value made the search put off risky passages); when switched
-        // on, the field is the discounted shortest safe lattice path, and 0 outside the bounds' reachable cells
+        // a wall closing the first gap makes the goal unreachable: the BFS can fail
+        const auto closed = navScenario("maze2d", {{"walls", {{{-12, -25}, {-11, 25}}}}});
+        EXPECT_EQ(shortestGoalSteps(*asNav(*closed).parts().model, at(-20, 15), true), 0u);
+    }
+
+    TEST(NavigationModel, Random3DLeavesAreWorthZeroUnlessTheFieldIsOn)
+    {
+        // off by default (issue 14: the field's leaf value made the search put off risky passages); switched on, the
+        // field is the discounted shortest danger-free lattice path
         for (const char *name : {"random3d-1", "random3d-2", "random3d-3", "random3d-4"})
         {
             const auto r3 = navScenario(name);
             const auto &off = *asNav(*r3).parts().model;
-            const double *start = off.config().starts.front().data();
-            EXPECT_EQ(off.goalDistance(start), -1) << name;
-            EXPECT_EQ(off.heuristicValue(at(start[0], start[1], start[2])), 0.0) << name;
+            const double *p = off.config().starts.front().data();
+            const NavState start = at(p[0], p[1], p[2]);
+            EXPECT_EQ(off.goalDistance(p), -1) << name;
+            EXPECT_EQ(off.heuristicValue(start), 0.0) << name;
             const auto on = navScenario(name, {{"heuristic_value", true}});
             const auto &field = *asNav(*on).parts().model;
-            const long d = field.goalDistance(start);
+            const long d = field.goalDistance(p);
             // the field (a grid anchored at the bounds, the start rounded to its nearest cell: at most half a step
             // per axis) agrees with the forward BFS from the start that avoids danger zones (H_min, 45-47 steps)
-            const auto hMin = static_cast<long>(shortestGoalSteps(field, at(start[0], start[1], start[2]), true));
+            const auto hMin = static_cast<long>(shortestGoalSteps(field, start, true));
             EXPECT_GE(hMin, 40) << name;
             EXPECT_LE(std::abs(d - hMin), 3) << name << ": field " << d << ", forward BFS " << hMin;
-            const double gd = std::pow(field.discount(), static_cast<double>(d));
-            EXPECT_NEAR(field.heuristicValue(at(start[0], start[1], start[2])),
-                        800.0 * gd - 0.1 * (1.0 - gd) / (1.0 - field.discount()), 1e-9)
+            ASSERT_GE(d, 0) << name;
+            EXPECT_NEAR(field.heuristicValue(start), fieldValue(field.discount(), static_cast<std::size_t>(d)), 1e-9)
                 << name;
         }
-        // a wall closing the first gap makes the goal unreachable: the BFS can fail
-        const auto closed = navScenario("maze2d", {{"walls", {{{-12, -25}, {-11, 25}}}}});
-        EXPECT_EQ(shortestGoalSteps(*asNav(*closed).parts().model, at(-20, 15), true), 0u);
     }
 
     TEST(NavigationModel, LightDarkHMinIsEight)
