@@ -175,3 +175,74 @@ TEST(RopRas3SelectionTest, UcbConcentratesVisitsOnTheBestChildrenUniformSpreadsT
     EXPECT_TRUE(parsed.ucbSelection);
     EXPECT_DOUBLE_EQ(parsed.ucbC, 1000.0);
 }
+
+namespace
+{
+    // One action that pays +800 or -2000 with equal probability and ends the episode: every child of the root
+    // is the same gamble, Q = -600 for each of them.
+    struct GambleModel
+    {
+        using State = int;
+        using Action = int;
+        using Observation = int;
+
+        StepResult<State, Observation> step(State s, Action, Rng &rng) const noexcept
+        {
+            return {s, 0, rng.uniform01() < 0.5 ? 800.0 : -2000.0, true};
+        }
+        double observationProbability(Observation, State, Action) const noexcept { return 1.0; }
+        State sampleInitialState(Rng &) const noexcept { return 0; }
+        double discount() const noexcept { return 0.9; }
+        std::size_t numActions() const noexcept { return 1; }
+        Action action(std::size_t) const noexcept { return 0; }
+    };
+}  // namespace
+
+// With noisy returns, Algorithm 2's running backup keeps every early Q estimate in its mean of exp(eta Q): one
+// child whose first return was +800 holds V near 800 - (1/eta) log N long after its Q fell to about -600. The
+// backup over the current estimates (value_backup=1) is Theorem 1's value of the children as they stand.
+TEST(SoftBackupTest, CurrentBackupForgetsStaleEstimatesRunningBackupDoesNot)
+{
+    auto model = std::make_shared<GambleModel>();
+    const auto rootValue = [&](RopRas3Settings::ValueBackup backup, std::vector<std::pair<double, std::uint32_t>> &kids)
+    {
+        RopRas3Settings settings;
+        settings.maxDepth = 0;
+        settings.rolloutSteps = 0;
+        settings.valueBackup = backup;
+        RopRas3Solver<GambleModel> solver(model, std::make_unique<RandomMacroPolicy<GambleModel>>(model, 1, 1),
+                                          settings);
+        const int particle = 0;
+        ropras::pomdp::Rng rng(5);
+        const auto result = solver.plan(BeliefView<int>{&particle, 1}, Budget::ofSimulations(4000), rng);
+        EXPECT_TRUE(result.valid);
+        kids = solver.rootChildren();
+        return result.statistics.rootValue;
+    };
+    std::vector<std::pair<double, std::uint32_t>> running, current;
+    const double vRunning = rootValue(RopRas3Settings::ValueBackup::RUNNING, running);
+    const double vCurrent = rootValue(RopRas3Settings::ValueBackup::CURRENT, current);
+    ASSERT_GE(current.size(), 6u);
+    std::vector<double> q, w;
+    double maxQ = -INFINITY;
+    for (const auto &c : current)
+    {
+        ASSERT_GT(c.second, 20u);
+        q.push_back(c.first);
+        w.push_back(c.second);
+        maxQ = std::max(maxQ, c.first);
+        EXPECT_NEAR(c.first, -600.0, 5.0 * 1400.0 / std::sqrt(static_cast<double>(c.second)));
+    }
+    EXPECT_NEAR(vCurrent, softValue(q.data(), w.data(), q.size(), 0.2), 1e-9 * 2000.0);
+    EXPECT_LE(vCurrent, maxQ + 1e-9);
+    EXPECT_LT(vCurrent, 0.0) << "the current backup is a soft maximum of Q estimates near -600 (seed 5: -362)";
+    // the running backup: bounded by the best return, far above every child's Q
+    EXPECT_GT(vRunning, 700.0) << "Algorithm 2's running backup remembers the first lucky returns (seed 5: 770)";
+    EXPECT_LE(vRunning, 800.0);
+
+    ParameterMap p;
+    p.set("value_backup", 1);
+    EXPECT_EQ(RopRas3Settings::fromParameters(p).valueBackup, RopRas3Settings::ValueBackup::CURRENT);
+    p.set("value_backup", 2);
+    EXPECT_THROW(RopRas3Settings::fromParameters(p), ropras::Error);
+}

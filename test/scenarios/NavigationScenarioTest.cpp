@@ -307,12 +307,21 @@ namespace ropras::scenarios::test
     {
         // maze2d's ROP-RAS3 searches one macro level with nine candidate macros; the other solvers keep the
         // shared defaults (depth 4, beta_a 2)
-        const auto &parts = asNav(*navScenario("maze2d")).parts();
+        const auto maze = navScenario("maze2d");  // parts() refers into the scenario: keep it alive
+        const auto &parts = asNav(*maze).parts();
         EXPECT_EQ(parts.solverDefaults.at("ropras3").at("depth"), 0.0);
         EXPECT_EQ(parts.solverDefaults.at("ropras3").at("beta_a"), 8.0);
         EXPECT_EQ(parts.solverDefaults.at("ropras3").at("alpha_a"), 0.0);
         EXPECT_EQ(parts.defaults.at("depth"), 4.0);
         EXPECT_EQ(parts.solverDefaults.count("rpomcp"), 0u);
+        // Random3D's ROP-RAS3 backs V up from the current Q estimates (value_backup 1; doc/scenario-random3d.md)
+        for (const char *variant : {"random3d-1", "random3d-4"})
+        {
+            const auto random3d = navScenario(variant);
+            const auto &defaults = asNav(*random3d).parts().solverDefaults;
+            EXPECT_EQ(defaults.at("ropras3").at("value_backup"), 1.0) << variant;
+            EXPECT_EQ(defaults.count("refbasic"), 0u) << variant;
+        }
         // --config overrides a solver default like any other key; --param still overrides both at run time
         const auto deeper = navScenario("maze2d", {{"solver_defaults", {{"ropras3", {{"depth", 2}}}}}});
         EXPECT_EQ(asNav(*deeper).parts().solverDefaults.at("ropras3").at("depth"), 2.0);

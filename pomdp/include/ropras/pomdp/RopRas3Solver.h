@@ -62,13 +62,24 @@ namespace ropras::pomdp
         bool ucbSelection{false};
         /** \brief UCB1's exploration constant (the reward range's order); used only with ucbSelection. */
         double ucbC{1.0};
+        /** \brief How V(b) is backed up: RUNNING = Algorithm 2's Backup line, a running mean of exp(eta Q) over
+            the Q(b, a) of every past visit (stale estimates included, so one early lucky return keeps V near it
+            for ~(1/eta) log N); CURRENT = Theorem 1 over the children's current estimates,
+            V(b) = (1/eta) log sum_a N(ba)/N(b) exp(eta Q(b, a)). The two agree while the Q(b, a) stay fixed. */
+        enum class ValueBackup
+        {
+            RUNNING = 0,
+            CURRENT = 1
+        };
+        ValueBackup valueBackup{ValueBackup::RUNNING};
         /** \brief Measure time spent in the model and in the reference policy (two clock reads per call). */
         bool profile{false};
         /** \brief Memory cap of the tree (MiB): the search stops there and says so (SearchStatistics). */
         double maxTreeMegabytes{detail::DEFAULT_MAX_TREE_MB};
 
         /** \brief Reads eta, beta_a, alpha_a, beta_o, alpha_o, macro_observation, independent_eval, depth,
-            rollout_steps, max_particles, sample_action, ucb_select, ucb_c, profile, max_tree_mb;
+            rollout_steps, max_particles, sample_action, ucb_select, ucb_c, value_backup, profile,
+            max_tree_mb;
             throws ropras::Error for out-of-range values. */
         static RopRas3Settings fromParameters(const ParameterMap &p)
         {
@@ -89,6 +100,8 @@ namespace ropras::pomdp
             s.sampleAction = p.getCount("sample_action", 0) != 0;
             s.ucbSelection = p.getCount("ucb_select", 0, 1) != 0;
             s.ucbC = p.get("ucb_c", s.ucbC);
+            const auto backup = p.getCount("value_backup", static_cast<std::size_t>(s.valueBackup), 1);
+            s.valueBackup = static_cast<ValueBackup>(backup);
             s.profile = p.getCount("profile", 0) != 0;
             s.maxTreeMegabytes = detail::maxTreeMegabytes(p, "ROP-RAS3");
             s.validate();
@@ -130,8 +143,9 @@ namespace ropras::pomdp
         pibar, so this is argmax Q (default) or a softmax sample over the children.
 
         Deviations (documented in doc/pomdp.md): observation widening is replaced by binning (as in the
-        paper's implementation); when the reference policy fails at a node without children the simulation
-        returns a rollout from s without a backup at that node; terminal outcomes do not create a child.
+        paper's implementation); value_backup = 1 (RopRas3Settings::ValueBackup::CURRENT) computes V from the
+        children's current Q instead of the running mean; when the reference policy fails at a node without children the
+       simulation returns a rollout from s without a backup at that node; terminal outcomes do not create a child.
 
         All tree storage (nodes, macro pool, particle arena) is flat and reused across plan() calls. */
     template <class M>
@@ -480,8 +494,37 @@ namespace ropras::pomdp
             ++node.visits;
             ++action.visits;
             action.q += (r - action.q) / static_cast<double>(action.visits);
-            node.value = softValueUpdate(node.value, action.q, node.visits, settings_.eta);
+            node.value = settings_.valueBackup == RopRas3Settings::ValueBackup::RUNNING
+                             ? softValueUpdate(node.value, action.q, node.visits, settings_.eta)
+                             : currentSoftValue(b);
             return node.value;
+        }
+
+        /** \brief Theorem 1 over the current children: (1/eta) log sum_a N(ba)/N(b) exp(eta Q(b, a)), in log
+            space (the largest eta Q is factored out). Every backup at b increments one child, so sum N(ba) = N(b). */
+        double currentSoftValue(std::uint32_t b) const noexcept
+        {
+            const double eta = settings_.eta;
+            double best = -std::numeric_limits<double>::infinity();
+            for (const std::uint32_t a : childArena_.view(beliefs_[b].children))
+            {
+                if (actions_[a].visits > 0)
+                {
+                    best = std::max(best, eta * actions_[a].q);
+                }
+            }
+            double sum = 0.0;
+            double total = 0.0;
+            for (const std::uint32_t a : childArena_.view(beliefs_[b].children))
+            {
+                if (actions_[a].visits > 0)
+                {
+                    const auto n = static_cast<double>(actions_[a].visits);
+                    sum += n * std::exp(eta * actions_[a].q - best);
+                    total += n;
+                }
+            }
+            return (best + std::log(sum / total)) / eta;
         }
 
         std::uint32_t selectRootAction(Rng &rng) const
