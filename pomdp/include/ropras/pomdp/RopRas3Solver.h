@@ -491,13 +491,42 @@ namespace ropras::pomdp
             }
             BeliefNode &node = beliefs_[b];
             ActionNode &action = actions_[a];
+            const std::uint32_t visitsBefore = action.visits;
+            const double qBefore = action.q;
             ++node.visits;
             ++action.visits;
             action.q += (r - action.q) / static_cast<double>(action.visits);
             node.value = settings_.valueBackup == RopRas3Settings::ValueBackup::RUNNING
                              ? softValueUpdate(node.value, action.q, node.visits, settings_.eta)
-                             : currentSoftValue(b);
+                             : updatedSoftValue(b, visitsBefore, qBefore, a);
             return node.value;
+        }
+
+        /** \brief currentSoftValue(b) after child \a a went from (visitsBefore, qBefore) to its present (N, Q),
+            from V(b) before the change: sum N(ba) exp(eta Q) = (N(b) - 1) exp(eta V) held the old term, so
+            V' = V + (1/eta) log[((N(b) - 1) - n exp(eta (q - V)) + N(ba) exp(eta (Q(ba) - V))) / N(b)]: two exp
+            and one log instead of one exp per child. When the old term made up nearly all of the sum (the
+            difference would lose its digits) or the new one would overflow, the sum is recomputed. */
+        double updatedSoftValue(std::uint32_t b, std::uint32_t visitsBefore, double qBefore,
+                                std::uint32_t a) const noexcept
+        {
+            const BeliefNode &node = beliefs_[b];
+            if (node.visits <= 1)
+            {
+                return actions_[a].q;
+            }
+            const double eta = settings_.eta;
+            const double v = node.value;
+            const double others = static_cast<double>(node.visits - 1);
+            const double rest =
+                others - (visitsBefore == 0 ? 0.0 : static_cast<double>(visitsBefore) * std::exp(eta * (qBefore - v)));
+            const double d = eta * (actions_[a].q - v);
+            if (!(rest > 1e-3 * others) || d > 50.0)
+            {
+                return currentSoftValue(b);
+            }
+            const double sum = rest + static_cast<double>(actions_[a].visits) * std::exp(d);
+            return v + std::log(sum / static_cast<double>(node.visits)) / eta;
         }
 
         /** \brief Theorem 1 over the current children: (1/eta) log sum_a N(ba)/N(b) exp(eta Q(b, a)), in log
