@@ -12,6 +12,7 @@
 #include "ropras/pomdp/ParameterMap.h"
 #include "ropras/pomdp/RandomMacroPolicy.h"
 #include "ropras/pomdp/RopRas3Solver.h"
+#include "ropras/pomdp/TreeSnapshot.h"
 
 using namespace ropras::pomdp;
 
@@ -245,4 +246,72 @@ TEST(SoftBackupTest, CurrentBackupForgetsStaleEstimatesRunningBackupDoesNot)
     EXPECT_EQ(RopRas3Settings::fromParameters(p).valueBackup, RopRas3Settings::ValueBackup::CURRENT);
     p.set("value_backup", 2);
     EXPECT_THROW(RopRas3Settings::fromParameters(p), ropras::Error);
+}
+
+namespace
+{
+    // Four steps: action 0 gambles (+800 or -2000, either ends the episode), action 1 pays -1 and goes on. A
+    // deep tree whose children's Q estimates move (mostly down) as their returns come in.
+    struct GambleChainModel
+    {
+        using State = int;
+        using Action = int;
+        using Observation = int;
+
+        StepResult<State, Observation> step(State s, Action a, Rng &rng) const noexcept
+        {
+            if (a == 0)
+            {
+                return {s + 1, 0, rng.uniform01() < 0.5 ? 800.0 : -2000.0, true};
+            }
+            return {s + 1, static_cast<int>(rng.uniformIndex(2)), -1.0, s + 1 >= 4};
+        }
+        double observationProbability(Observation, State, Action) const noexcept { return 1.0; }
+        State sampleInitialState(Rng &) const noexcept { return 0; }
+        double discount() const noexcept { return 0.95; }
+        std::size_t numActions() const noexcept { return 2; }
+        Action action(std::size_t i) const noexcept { return static_cast<Action>(i); }
+    };
+}  // namespace
+
+// value_backup=1 keeps Theorem 1's value over the current children at every belief node of a deep tree, not only
+// at the root, while the children's estimates move.
+TEST(SoftBackupTest, CurrentBackupHoldsAtEveryNodeOfADeepTree)
+{
+    auto model = std::make_shared<GambleChainModel>();
+    RopRas3Settings settings;
+    settings.maxDepth = 3;
+    settings.rolloutSteps = 0;
+    settings.valueBackup = RopRas3Settings::ValueBackup::CURRENT;
+    RopRas3Solver<GambleChainModel> solver(model, std::make_unique<RandomMacroPolicy<GambleChainModel>>(model, 1, 1),
+                                           settings);
+    const int particle = 0;
+    ropras::pomdp::Rng rng(11);
+    const auto result = solver.plan(BeliefView<int>{&particle, 1}, Budget::ofSimulations(20000), rng);
+    ASSERT_TRUE(result.valid);
+    TreeSnapshot tree;
+    ASSERT_TRUE(solver.treeSnapshot(tree));
+    std::size_t checked = 0, deep = 0;
+    for (const auto &belief : tree.beliefs)
+    {
+        std::vector<double> q, w;
+        for (const std::uint32_t a : belief.children)
+        {
+            if (tree.actions[a].visits > 0)
+            {
+                q.push_back(tree.actions[a].q);
+                w.push_back(tree.actions[a].visits);
+            }
+        }
+        if (q.size() < 2)
+        {
+            continue;
+        }
+        ++checked;
+        deep += belief.depth >= 2 ? 1 : 0;
+        EXPECT_NEAR(belief.value, softValue(q.data(), w.data(), q.size(), settings.eta), 1e-9 * 2000.0)
+            << "belief at depth " << belief.depth << " with " << belief.visits << " visits";
+    }
+    EXPECT_GT(checked, 20u);
+    EXPECT_GT(deep, 5u);
 }

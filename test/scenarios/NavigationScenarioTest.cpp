@@ -320,6 +320,7 @@ namespace ropras::scenarios::test
             const auto random3d = navScenario(variant);
             const auto &defaults = asNav(*random3d).parts().solverDefaults;
             EXPECT_EQ(defaults.at("ropras3").at("value_backup"), 1.0) << variant;
+            // Ref-Basic keeps the paper's running backup (its Random3D rows fail every episode with either)
             EXPECT_EQ(defaults.count("refbasic"), 0u) << variant;
         }
         // --config overrides a solver default like any other key; --param still overrides both at run time

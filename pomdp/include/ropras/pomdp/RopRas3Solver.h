@@ -138,14 +138,16 @@ namespace ropras::pomdp
         |C(b)| <= beta_a N(b)^alpha_a, else a uniformly chosen existing child), run the macro with the
         generative model, bin the macro observation (MacroStepResult::observationKey), add s' to the child's
         particles, recurse, and Backup: N(b)++, N(ba)++, Q(ba) += (r - Q)/N(ba) with
-        r = macro reward + gamma^len V(child), and the soft value update softValueUpdate(). The executed
+        r = macro reward + gamma^len V(child), and the soft value update softValueUpdate() (value_backup 0)
+        or currentSoftValue() over the children (value_backup 1). The executed
         action is read off the root with pi*(a|b) ~ pibar(a|b) exp(eta Q(b,a)): children were drawn from
         pibar, so this is argmax Q (default) or a softmax sample over the children.
 
         Deviations (documented in doc/pomdp.md): observation widening is replaced by binning (as in the
-        paper's implementation); value_backup = 1 (RopRas3Settings::ValueBackup::CURRENT) computes V from the
-        children's current Q instead of the running mean; when the reference policy fails at a node without children the
-       simulation returns a rollout from s without a backup at that node; terminal outcomes do not create a child.
+        paper's implementation); value_backup = 1 (RopRas3Settings::ValueBackup::CURRENT) computes V from
+        the children's current Q instead of the running mean; when the reference policy fails at a node without
+        children the simulation returns a rollout from s without a backup at that node; terminal outcomes do not
+        create a child.
 
         All tree storage (nodes, macro pool, particle arena) is flat and reused across plan() calls. */
     template <class M>
@@ -491,46 +493,19 @@ namespace ropras::pomdp
             }
             BeliefNode &node = beliefs_[b];
             ActionNode &action = actions_[a];
-            const std::uint32_t visitsBefore = action.visits;
-            const double qBefore = action.q;
             ++node.visits;
             ++action.visits;
             action.q += (r - action.q) / static_cast<double>(action.visits);
             node.value = settings_.valueBackup == RopRas3Settings::ValueBackup::RUNNING
                              ? softValueUpdate(node.value, action.q, node.visits, settings_.eta)
-                             : updatedSoftValue(b, visitsBefore, qBefore, a);
+                             : currentSoftValue(b);
             return node.value;
         }
 
-        /** \brief currentSoftValue(b) after child \a a went from (visitsBefore, qBefore) to its present (N, Q),
-            from V(b) before the change: sum N(ba) exp(eta Q) = (N(b) - 1) exp(eta V) held the old term, so
-            V' = V + (1/eta) log[((N(b) - 1) - n exp(eta (q - V)) + N(ba) exp(eta (Q(ba) - V))) / N(b)]: two exp
-            and one log instead of one exp per child. When the old term made up nearly all of the sum (the
-            difference would lose its digits) or the new one would overflow, the sum is recomputed. */
-        double updatedSoftValue(std::uint32_t b, std::uint32_t visitsBefore, double qBefore,
-                                std::uint32_t a) const noexcept
-        {
-            const BeliefNode &node = beliefs_[b];
-            if (node.visits <= 1)
-            {
-                return actions_[a].q;
-            }
-            const double eta = settings_.eta;
-            const double v = node.value;
-            const double others = static_cast<double>(node.visits - 1);
-            const double rest =
-                others - (visitsBefore == 0 ? 0.0 : static_cast<double>(visitsBefore) * std::exp(eta * (qBefore - v)));
-            const double d = eta * (actions_[a].q - v);
-            if (!(rest > 1e-3 * others) || d > 50.0)
-            {
-                return currentSoftValue(b);
-            }
-            const double sum = rest + static_cast<double>(actions_[a].visits) * std::exp(d);
-            return v + std::log(sum / static_cast<double>(node.visits)) / eta;
-        }
-
         /** \brief Theorem 1 over the current children: (1/eta) log sum_a N(ba)/N(b) exp(eta Q(b, a)), in log
-            space (the largest eta Q is factored out). Every backup at b increments one child, so sum N(ba) = N(b). */
+            space (the largest eta Q is factored out). Every backup at b increments one child, so sum N(ba) = N(b).
+            One exp per child: kept exact rather than updated incrementally from V, whose rounding error would
+            grow relative to the sum as the children's Q fall. */
         double currentSoftValue(std::uint32_t b) const noexcept
         {
             const double eta = settings_.eta;
