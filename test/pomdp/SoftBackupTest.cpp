@@ -179,23 +179,29 @@ TEST(RopRas3SelectionTest, UcbConcentratesVisitsOnTheBestChildrenUniformSpreadsT
 
 namespace
 {
-    // One action that pays +800 or -2000 with equal probability and ends the episode: every child of the root
-    // is the same gamble, Q = -600 for each of them.
-    struct GambleModel
+    // Four steps: action 0 gambles (+800 or -2000 with equal probability, either ends the episode: Q = -600),
+    // action 1 (when there are two actions) pays -1 and goes on. With two actions, a deep tree whose children's Q
+    // estimates move as their returns come in.
+    struct GambleChainModel
     {
         using State = int;
         using Action = int;
         using Observation = int;
+        std::size_t actions{2};
 
-        StepResult<State, Observation> step(State s, Action, Rng &rng) const noexcept
+        StepResult<State, Observation> step(State s, Action a, Rng &rng) const noexcept
         {
-            return {s, 0, rng.uniform01() < 0.5 ? 800.0 : -2000.0, true};
+            if (a == 0)
+            {
+                return {s + 1, 0, rng.uniform01() < 0.5 ? 800.0 : -2000.0, true};
+            }
+            return {s + 1, static_cast<int>(rng.uniformIndex(2)), -1.0, s + 1 >= 4};
         }
         double observationProbability(Observation, State, Action) const noexcept { return 1.0; }
         State sampleInitialState(Rng &) const noexcept { return 0; }
-        double discount() const noexcept { return 0.9; }
-        std::size_t numActions() const noexcept { return 1; }
-        Action action(std::size_t) const noexcept { return 0; }
+        double discount() const noexcept { return 0.95; }
+        std::size_t numActions() const noexcept { return actions; }
+        Action action(std::size_t i) const noexcept { return static_cast<Action>(i); }
     };
 }  // namespace
 
@@ -204,15 +210,16 @@ namespace
 // backup over the current estimates (value_backup=1) is Theorem 1's value of the children as they stand.
 TEST(SoftBackupTest, CurrentBackupForgetsStaleEstimatesRunningBackupDoesNot)
 {
-    auto model = std::make_shared<GambleModel>();
+    auto model = std::make_shared<GambleChainModel>();
+    model->actions = 1;  // the gamble alone: every child of the root is the same gamble
     const auto rootValue = [&](RopRas3Settings::ValueBackup backup, std::vector<std::pair<double, std::uint32_t>> &kids)
     {
         RopRas3Settings settings;
         settings.maxDepth = 0;
         settings.rolloutSteps = 0;
         settings.valueBackup = backup;
-        RopRas3Solver<GambleModel> solver(model, std::make_unique<RandomMacroPolicy<GambleModel>>(model, 1, 1),
-                                          settings);
+        RopRas3Solver<GambleChainModel> solver(
+            model, std::make_unique<RandomMacroPolicy<GambleChainModel>>(model, 1, 1), settings);
         const int particle = 0;
         ropras::pomdp::Rng rng(5);
         const auto result = solver.plan(BeliefView<int>{&particle, 1}, Budget::ofSimulations(4000), rng);
@@ -247,32 +254,6 @@ TEST(SoftBackupTest, CurrentBackupForgetsStaleEstimatesRunningBackupDoesNot)
     p.set("value_backup", 2);
     EXPECT_THROW(RopRas3Settings::fromParameters(p), ropras::Error);
 }
-
-namespace
-{
-    // Four steps: action 0 gambles (+800 or -2000, either ends the episode), action 1 pays -1 and goes on. A
-    // deep tree whose children's Q estimates move (mostly down) as their returns come in.
-    struct GambleChainModel
-    {
-        using State = int;
-        using Action = int;
-        using Observation = int;
-
-        StepResult<State, Observation> step(State s, Action a, Rng &rng) const noexcept
-        {
-            if (a == 0)
-            {
-                return {s + 1, 0, rng.uniform01() < 0.5 ? 800.0 : -2000.0, true};
-            }
-            return {s + 1, static_cast<int>(rng.uniformIndex(2)), -1.0, s + 1 >= 4};
-        }
-        double observationProbability(Observation, State, Action) const noexcept { return 1.0; }
-        State sampleInitialState(Rng &) const noexcept { return 0; }
-        double discount() const noexcept { return 0.95; }
-        std::size_t numActions() const noexcept { return 2; }
-        Action action(std::size_t i) const noexcept { return static_cast<Action>(i); }
-    };
-}  // namespace
 
 // value_backup=1 keeps Theorem 1's value over the current children at every belief node of a deep tree, not only
 // at the root, while the children's estimates move.
