@@ -7,9 +7,11 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ropras/core/Error.h"
+#include "ropras/pomdp/BeliefView.h"
 #include "ropras/pomdp/MacroAction.h"
 #include "ropras/pomdp/Model.h"
 #include "ropras/pomdp/ParameterMap.h"
@@ -502,33 +504,21 @@ namespace ropras::pomdp
             return node.value;
         }
 
-        /** \brief Theorem 1 over the current children: (1/eta) log sum_a N(ba)/N(b) exp(eta Q(b, a)), in log
-            space (the largest eta Q is factored out). Every backup at b increments one child, so sum N(ba) = N(b).
-            One exp per child: kept exact rather than updated incrementally from V, whose rounding error would
-            grow relative to the sum as the children's Q fall. */
+        /** \brief Theorem 1 over the current children, (1/eta) log sum_a N(ba)/N(b) exp(eta Q(b, a)) (softValueOf;
+            every backup at b increments one child, so sum N(ba) = N(b)). One exp per child: kept exact rather
+            than updated incrementally from V, whose rounding error would grow relative to the sum as the
+            children's Q fall. */
         double currentSoftValue(std::uint32_t b) const noexcept
         {
-            const double eta = settings_.eta;
-            double best = -std::numeric_limits<double>::infinity();
-            for (const std::uint32_t a : childArena_.view(beliefs_[b].children))
-            {
-                if (actions_[a].visits > 0)
+            const BeliefView<std::uint32_t> children = childArena_.view(beliefs_[b].children);
+            return softValueOf(
+                children.size,
+                [&](std::size_t i)
                 {
-                    best = std::max(best, eta * actions_[a].q);
-                }
-            }
-            double sum = 0.0;
-            double total = 0.0;
-            for (const std::uint32_t a : childArena_.view(beliefs_[b].children))
-            {
-                if (actions_[a].visits > 0)
-                {
-                    const auto n = static_cast<double>(actions_[a].visits);
-                    sum += n * std::exp(eta * actions_[a].q - best);
-                    total += n;
-                }
-            }
-            return (best + std::log(sum / total)) / eta;
+                    const ActionNode &a = actions_[children[i]];
+                    return std::pair<double, double>(a.q, static_cast<double>(a.visits));
+                },
+                settings_.eta);
         }
 
         std::uint32_t selectRootAction(Rng &rng) const

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <utility>
 
 namespace ropras::pomdp
 {
@@ -50,20 +51,23 @@ namespace ropras::pomdp
         return (eta * q - std::log(dn) + std::log1p((dn - 1.0) * std::exp(-d))) / eta;
     }
 
-    /** \brief Batch form of Theorem 1: (1/eta) log sum_i w_i exp(eta q_i) / sum_i w_i (log-sum-exp).
-        Returns -infinity when all weights are 0 or count is 0. */
-    inline double softValue(const double *q, const double *w, std::size_t count, double eta) noexcept
+    /** \brief Batch form of Theorem 1 over \a count entries: (1/eta) log sum_i w_i exp(eta q_i) / sum_i w_i
+        (log-sum-exp; entries of weight 0 are skipped). \a entry(i) returns the pair (q_i, w_i), so a caller can
+        read them from its own storage (a search node's children) without copying. Returns -infinity when all
+        weights are 0 or count is 0. */
+    template <class Entry>
+    double softValueOf(std::size_t count, Entry &&entry, double eta) noexcept
     {
         double best = -std::numeric_limits<double>::infinity();
         double totalWeight = 0.0;
         for (std::size_t i = 0; i < count; ++i)
         {
-            const double wi = w ? w[i] : 1.0;
-            if (wi > 0.0 && eta * q[i] > best)
+            const auto [q, w] = entry(i);
+            if (w > 0.0 && eta * q > best)
             {
-                best = eta * q[i];
+                best = eta * q;
             }
-            totalWeight += wi;
+            totalWeight += w;
         }
         if (!(totalWeight > 0.0) || best == -std::numeric_limits<double>::infinity())
         {
@@ -72,13 +76,20 @@ namespace ropras::pomdp
         double sum = 0.0;
         for (std::size_t i = 0; i < count; ++i)
         {
-            const double wi = w ? w[i] : 1.0;
-            if (wi > 0.0)
+            const auto [q, w] = entry(i);
+            if (w > 0.0)
             {
-                sum += wi * std::exp(eta * q[i] - best);
+                sum += w * std::exp(eta * q - best);
             }
         }
         return (best + std::log(sum / totalWeight)) / eta;
+    }
+
+    /** \brief softValueOf() over arrays: q[i] with weights w[i] (\a w null: every weight 1). */
+    inline double softValue(const double *q, const double *w, std::size_t count, double eta) noexcept
+    {
+        return softValueOf(
+            count, [q, w](std::size_t i) { return std::pair<double, double>(q[i], w ? w[i] : 1.0); }, eta);
     }
 }  // namespace ropras::pomdp
 
