@@ -66,16 +66,10 @@ namespace ropras::ompl_ext::fcl_reference
                         switch (s.type)
                         {
                             case ShapeType::Sphere:
-                                add(std::make_shared<fcl::Sphered>(s.radius), pose, label);
-                                break;
                             case ShapeType::Box:
-                                add(std::make_shared<fcl::Boxd>(s.extents), pose, label);
-                                break;
                             case ShapeType::Cylinder:
-                                add(std::make_shared<fcl::Cylinderd>(s.radius, s.length), pose, label);
-                                break;
                             case ShapeType::Capsule:
-                                add(std::make_shared<fcl::Capsuled>(s.radius, s.length), pose, label);
+                                add(primitiveGeometry(s), pose, label);
                                 break;
                             case ShapeType::PointCloud:
                             {
@@ -105,6 +99,24 @@ namespace ropras::ompl_ext::fcl_reference
             return scene;
         }
     }  // namespace
+
+    GeometryPtr primitiveGeometry(const Shape &s)
+    {
+        switch (s.type)
+        {
+            case ShapeType::Sphere:
+                return std::make_shared<fcl::Sphered>(s.radius);
+            case ShapeType::Box:
+                return std::make_shared<fcl::Boxd>(s.extents);
+            case ShapeType::Cylinder:
+                return std::make_shared<fcl::Cylinderd>(s.radius, s.length);
+            case ShapeType::Capsule:
+                return std::make_shared<fcl::Capsuled>(s.radius, s.length);
+            case ShapeType::PointCloud:
+                break;
+        }
+        return nullptr;
+    }
 
     std::size_t tagLabel(const fcl::CollisionObjectd *object)
     {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "ropras/ompl_ext/scene/Environment.h"
+#include "ropras/ompl_ext/scene/Shape.h"
 
 // The obstacles of an Environment (and its bases) as FCL objects, for the FCL reference checkers.
 
@@ -27,6 +28,9 @@ namespace ropras::ompl_ext::fcl_reference
         std::vector<std::string> labels;  ///< per object: "object 'name'" (+ primitive / point index)
         std::unique_ptr<fcl::DynamicAABBTreeCollisionManagerd> manager;
     };
+
+    /// the FCL geometry of a primitive (sphere, box, cylinder, capsule; nullptr for a point cloud)
+    GeometryPtr primitiveGeometry(const Shape &shape);
 
     /// the index into ObstacleScene::labels of one of its objects
     std::size_t tagLabel(const fcl::CollisionObjectd *object);
