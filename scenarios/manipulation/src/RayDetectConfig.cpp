@@ -111,6 +111,7 @@ namespace ropras::scenarios
                         "entropy_cell",
                         "heuristic_value",
                         "heuristic_ee_step",
+                        "reachable_goal",
                         "planning",
                         "defaults"});
         RayDetectConfig c;
@@ -158,6 +159,7 @@ namespace ropras::scenarios
         c.entropyCell = r.within("entropy_cell", 1e-4, 10.0);
         c.heuristicValue = r.boolean("heuristic_value");
         c.heuristicEndEffectorStep = r.within("heuristic_ee_step", 1e-5, 1.0);
+        c.reachableGoal = r.boolean("reachable_goal");
         readPlanning(r, c);
         const ConfigReader d = r.sub("defaults");
         for (const auto &item : r.at("defaults").items())

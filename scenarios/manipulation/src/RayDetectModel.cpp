@@ -7,7 +7,10 @@
 #include <utility>
 
 #include "ropras/core/Error.h"
+#include "ropras/ompl_ext/kinematics/CollisionFreePredicate.h"
+#include "ropras/ompl_ext/kinematics/IkTarget.h"
 #include "ropras/ompl_ext/scene/EnvironmentQueries.h"
+#include "ropras/ompl_ext/scene/ShapeIntersection.h"
 
 namespace ropras::scenarios
 {
@@ -99,6 +102,23 @@ namespace ropras::scenarios
         if (nominal_->signedDistance(vec(config_.goalPoint), 0.0) <= 0.0)
         {
             throw Error(where("goal_point") + "is inside an obstacle");
+        }
+        if (!physicallyPossible(nominalState()))
+        {
+            throw Error(where("obstacles") +
+                        "at their nominal poses overlap each other or the can, or reach into the goal ball "
+                        "(goal_point, goal_radius)");
+        }
+        ik_ = std::make_shared<const ompl_ext::InverseKinematics>(arm_->endEffectorChain());
+        goalIk_.restarts = 100;
+        goalIk_.positionTolerance = 1e-4;
+        goalIk_.validate();
+        pomdp::Rng probe(1);
+        if (config_.reachableGoal && !goalReachable(nominalState(), probe))
+        {
+            throw Error(where("goal_point") +
+                        "has no collision-free configuration within planning.ik_radius_fraction * "
+                        "goal_radius of it at the nominal obstacle poses (IK)");
         }
         const double s = config_.observationSigma;
         logNorm_ = -static_cast<double>(ARM_DOF) * std::log(std::sqrt(2.0 * PI) * s);
@@ -248,10 +268,93 @@ namespace ropras::scenarios
         return s;
     }
 
+    bool RayDetectModel::physicallyPossible(const State &s) const noexcept
+    {
+        try
+        {
+            const ompl_ext::Shape can = ompl_ext::Shape::cylinder(config_.targetRadius, config_.targetLength);
+            const Eigen::Isometry3d canPose(Eigen::Translation3d(vec(config_.targetCenter)));
+            Eigen::Isometry3d poses[RAY_DETECT_OBSTACLES];
+            ompl_ext::Shape boxes[RAY_DETECT_OBSTACLES];
+            for (std::size_t k = 0; k < RAY_DETECT_OBSTACLES; ++k)
+            {
+                poses[k] = rayDetectPose(s.poses[k]);
+                boxes[k] = ompl_ext::Shape::box(vec(config_.obstacles[k].extents));
+                if (ompl_ext::shapesIntersect(boxes[k], poses[k], can, canPose))
+                {
+                    return false;
+                }
+                for (std::size_t j = 0; j < k; ++j)
+                {
+                    if (ompl_ext::shapesIntersect(boxes[k], poses[k], boxes[j], poses[j]))
+                    {
+                        return false;
+                    }
+                }
+            }
+            // the goal ball against the obstacles (the table and the can are fixed and checked at construction)
+            const Eigen::Vector3d goal = vec(config_.goalPoint);
+            for (std::size_t k = 0; k < RAY_DETECT_OBSTACLES; ++k)
+            {
+                const ompl_ext::Shape ball = ompl_ext::Shape::sphere(config_.goalRadius);
+                if (ompl_ext::shapesIntersect(boxes[k], poses[k], ball, Eigen::Isometry3d(Eigen::Translation3d(goal))))
+                {
+                    return false;
+                }
+            }
+            return true;
+        }
+        catch (const Error &)
+        {
+            return false;  // a non-finite pose
+        }
+    }
+
+    bool RayDetectModel::goalReachable(const State &s, pomdp::Rng &rng) const noexcept
+    {
+        struct ThreadIk
+        {
+            std::uint64_t instance{0};
+            std::unique_ptr<ompl_ext::IkWorkspace> workspace;
+        };
+        thread_local ThreadIk cache;
+        try
+        {
+            if (cache.instance != instance_ || !cache.workspace)
+            {
+                cache.workspace = std::make_unique<ompl_ext::IkWorkspace>(ik_->makeWorkspace());
+                cache.instance = instance_;
+            }
+            const ompl_ext::ConfigurationPredicate free = ompl_ext::collisionFreePredicate(*arm_->checker(), scene(s));
+            const double r = config_.ikRadiusFraction * config_.goalRadius;
+            double q[ARM_DOF];
+            for (std::size_t attempt = 0; attempt < config_.ikPoints; ++attempt)
+            {
+                Eigen::Vector3d offset;
+                do
+                {
+                    offset = Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+                } while (offset.squaredNorm() > 1.0);
+                const auto target = ompl_ext::IkTarget::position(vec(config_.goalPoint) + r * offset);
+                if (ik_->solve(target, config_.start.data(), rng, *cache.workspace, q, goalIk_, &free).status ==
+                    ompl_ext::IkStatus::Solved)
+                {
+                    return true;
+                }
+            }
+        }
+        catch (const std::exception &)
+        {
+            // out of memory for the workspace or the predicate: not shown reachable
+        }
+        return false;
+    }
+
     RayDetectModel::State RayDetectModel::sampleInitialState(pomdp::Rng &rng) const noexcept
     {
         State s = nominalState();
-        // redrawn while the arm collides in the drawn scene (the validated nominal state is the fallback)
+        // redrawn while the layout is not physically possible, the arm collides in the drawn scene or (reachable_goal)
+        // no configuration reaches the goal (the validated nominal state is the fallback)
         for (int attempt = 0; attempt < 100; ++attempt)
         {
             for (std::size_t j = 0; j < ARM_DOF; ++j)
@@ -266,7 +369,8 @@ namespace ropras::scenarios
                     s.poses[k][i] = config_.obstacles[k].pose[i] + config_.initialSigmaPose[i] * rng.normal();
                 }
             }
-            if (arm_->checker()->isValid(scene(s), s.q))
+            if (physicallyPossible(s) && arm_->checker()->isValid(scene(s), s.q) &&
+                (!config_.reachableGoal || goalReachable(s, rng)))
             {
                 return s;
             }
@@ -314,7 +418,7 @@ namespace ropras::scenarios
                 }
             }
         }
-        if (arm_->checker()->isValid(scene(j), j.q))
+        if (physicallyPossible(j) && arm_->checker()->isValid(scene(j), j.q))
         {
             s = j;
         }

@@ -53,8 +53,9 @@ namespace ropras::scenarios
            fraction gets the hit's fraction along the segment. */
         int rayTest(const Eigen::Vector3d &from, const Eigen::Vector3d &to, double *fraction = nullptr) const;
 
-        /** \brief The smallest index of a solid obstacle (not a ray box) that contains the point \a p (Bullet
-            contactTest of a 0.1 mm probe sphere), or -1: rayTest does not report the shape a ray starts inside. */
+        /** \brief The smallest index of a solid obstacle (not a ray box) that contains the point \a p, or -1:
+            rayTest does not report the shape a ray starts inside. Boxes and z cylinders are tested exactly in
+            their Bullet shapes' frames; other shapes with contactTest of a 0.1 mm probe sphere. */
         int containing(const Eigen::Vector3d &p) const;
 
     private:

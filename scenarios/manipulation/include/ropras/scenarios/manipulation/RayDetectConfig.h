@@ -59,6 +59,7 @@ namespace ropras::scenarios
         double entropyCell{0.02};                  ///< "entropy_cell" (m): the Dynamic heuristic's bins
         bool heuristicValue{true};                 ///< "heuristic_value"
         double heuristicEndEffectorStep{0.02};     ///< "heuristic_ee_step": m of EE travel per step
+        bool reachableGoal{true};                  ///< "reachable_goal": b0 and the world draw only reachable goals
         // "planning": the reference policy
         double planSeconds{0.5};                 ///< "planning.plan_seconds"
         double referencePlanTime{0.01};          ///< "planning.reference_plan_time"

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "ropras/ompl_ext/kinematics/InverseKinematics.h"
 #include "ropras/ompl_ext/scene/Environment.h"
 #include "ropras/pomdp/Model.h"
 #include "ropras/pomdp/Rng.h"
@@ -55,7 +56,8 @@ namespace ropras::scenarios
         };
 
         /** \brief Throws ropras::Error naming the key when the start is outside the joint limits or in
-            collision with the nominal scene, or the goal point is inside an obstacle. */
+            collision with the nominal scene, the goal point is inside an obstacle, or the nominal layout is not
+            physically possible (physicallyPossible). */
         RayDetectModel(const RayDetectConfig &config, std::shared_ptr<const PandaArm> arm);
 
         const RayDetectConfig &config() const noexcept { return config_; }
@@ -78,7 +80,7 @@ namespace ropras::scenarios
             from the observed joints' end effector to the observed obstacle position; the joints are not binned. */
         std::uint64_t observationKey(const Observation &o) const noexcept;
         /** \brief Jitters the joints and the uncertain pose components (those with initial_sigma_pose > 0), kept
-            only when the arm is collision-free in the jittered scene. */
+            only when the arm is collision-free in the jittered scene and the layout physically possible. */
         void reinvigorate(State &s, pomdp::Rng &rng) const noexcept;
         /** \brief heuristic_value: the discounted value of reaching the goal in d steps, d = the end effector's
             distance to the goal ball / heuristic_ee_step; else 0. */
@@ -113,6 +115,17 @@ namespace ropras::scenarios
         }
         /// the initial state at the configured (nominal) poses and the start configuration
         State nominalState() const noexcept;
+        /** \brief Whether the obstacles' layout in \a s can exist: no obstacle overlaps another one or the can, and
+            none reaches into the goal ball (goal_point, goal_radius). Exact box, cylinder and sphere tests
+            (ompl_ext::shapesIntersect and Environment::signedDistance), not the arm's sphere model. The initial
+            belief, the true world and reinvigoration draw only such layouts. */
+        bool physicallyPossible(const State &s) const noexcept;
+        /** \brief Whether the arm can reach the goal in \a s: a configuration collision-free in the state's scene
+            (no margin) whose end effector is within planning.ik_radius_fraction * goal_radius of goal_point, found
+            by position IK from the start configuration (planning.ik_points random points of that ball,
+            planning.ik_restarts restarts each). IK is incomplete: false means that none was found. With
+            reachable_goal (default) the initial belief and the true world draw only states where it holds. */
+        bool goalReachable(const State &s, pomdp::Rng &rng) const noexcept;
 
     private:
         RayDetectConfig config_;
@@ -122,6 +135,8 @@ namespace ropras::scenarios
         std::uint64_t instance_{0};
         double logNorm_{0.0};
         std::array<double, 6> kernelSigma_{};
+        std::shared_ptr<const ompl_ext::InverseKinematics> ik_;  ///< the end effector's chain (goalReachable)
+        ompl_ext::IkOptions goalIk_;
     };
 
     /** \brief The pose (x, y, z, roll, pitch, yaw; R = Rz Ry Rx) as an isometry. */
