@@ -164,10 +164,11 @@ namespace ropras::pomdp
         }
     }
 
-    /** \brief Discounted random rollout from \a s for at most \a steps primitive steps (plus the heuristic
-        value of the last state unless it is terminal). */
+    /** \brief Discounted random rollout from \a s for at most \a steps primitive steps, plus the heuristic
+        value of the last state unless it is terminal or \a withHeuristic is false. */
     template <class M>
-    inline double rolloutValue(const M &model, typename M::State s, unsigned steps, Rng &rng) noexcept
+    inline double rolloutValue(const M &model, typename M::State s, unsigned steps, Rng &rng,
+                               bool withHeuristic = true) noexcept
     {
         const double gamma = model.discount();
         double value = 0.0;
@@ -184,7 +185,7 @@ namespace ropras::pomdp
             }
             s = std::move(result.next);
         }
-        return value + weight * heuristicValueOf(model, s);
+        return withHeuristic ? value + weight * heuristicValueOf(model, s) : value;
     }
 }  // namespace ropras::pomdp
 

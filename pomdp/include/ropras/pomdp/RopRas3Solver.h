@@ -35,6 +35,10 @@ namespace ropras::pomdp
         unsigned maxDepth{50};
         /** \brief Primitive steps of the rollout below depth D (0 = value 0 / heuristic value only). */
         unsigned rolloutSteps{10};
+        /** \brief Whether the rollout below depth D ends with the model's heuristic value (default) or with 0.
+            Off for a model whose heuristic misleads the tree (Ray-Detect's straight-line distance to the goal now
+            and then keeps the arm pressed against a box between it and the goal, doc/scenario-ray-detect.md). */
+        bool heuristicLeaf{true};
         /** \brief Cap on the particles kept per belief node (uniform subsample); 0 = keep all (the paper). */
         unsigned maxParticlesPerNode{0};
         /** \brief Observation progressive widening (Algorithm 2, lines 6-10) over the binned macro observations:
@@ -80,7 +84,7 @@ namespace ropras::pomdp
         double maxTreeMegabytes{detail::DEFAULT_MAX_TREE_MB};
 
         /** \brief Reads eta, beta_a, alpha_a, beta_o, alpha_o, macro_observation, independent_eval, depth,
-            rollout_steps, max_particles, sample_action, ucb_select, ucb_c, value_backup, profile,
+            rollout_steps, heuristic_leaf, max_particles, sample_action, ucb_select, ucb_c, value_backup, profile,
             max_tree_mb;
             throws ropras::Error for out-of-range values. */
         static RopRas3Settings fromParameters(const ParameterMap &p)
@@ -94,6 +98,7 @@ namespace ropras::pomdp
                 static_cast<unsigned>(p.getCount("rollout_steps", s.rolloutSteps, ParameterMap::MAX_UNSIGNED));
             s.maxParticlesPerNode =
                 static_cast<unsigned>(p.getCount("max_particles", s.maxParticlesPerNode, ParameterMap::MAX_UNSIGNED));
+            s.heuristicLeaf = p.getCount("heuristic_leaf", s.heuristicLeaf ? 1 : 0, 1) != 0;
             s.betaO = p.get("beta_o", s.betaO);
             s.alphaO = p.get("alpha_o", s.alphaO);
             const auto mode = p.getCount("macro_observation", static_cast<std::size_t>(s.macroObservation), 1);
@@ -308,10 +313,10 @@ namespace ropras::pomdp
         {
             if (!settings_.profile)
             {
-                return rolloutValue(*model_, s, settings_.rolloutSteps, rng);
+                return rolloutValue(*model_, s, settings_.rolloutSteps, rng, settings_.heuristicLeaf);
             }
             const auto start = detail::Clock::now();
-            const double v = rolloutValue(*model_, s, settings_.rolloutSteps, rng);
+            const double v = rolloutValue(*model_, s, settings_.rolloutSteps, rng, settings_.heuristicLeaf);
             stats_.modelSeconds += detail::secondsSince(start);
             return v;
         }
