@@ -173,14 +173,18 @@ namespace ropras::ompl_ext
         const Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();
         Shape negative = Shape::sphere(0.1);
         negative.radius = -1.0;
-        ropras::test::expectErrorMentions([&] { shapesIntersect(negative, origin, box, origin); }, {"shapesIntersect", "shape a (sphere): a size is negative"});
+        ropras::test::expectErrorMentions([&] { shapesIntersect(negative, origin, box, origin); },
+                                          {"shapesIntersect", "shape a (sphere): a size is negative"});
         Shape nanBox = box;
         nanBox.extents.x() = std::nan("");
-        ropras::test::expectErrorMentions([&] { shapesIntersect(box, origin, nanBox, origin); }, {"shapesIntersect", "shape b (box): a size is negative or not finite"});
+        ropras::test::expectErrorMentions([&] { shapesIntersect(box, origin, nanBox, origin); },
+                                          {"shapesIntersect", "shape b (box): a size is negative or not finite"});
         Eigen::Isometry3d bad = origin;
         bad.translation().x() = std::numeric_limits<double>::infinity();
-        ropras::test::expectErrorMentions([&] { shapesIntersect(box, bad, box, origin); }, {"shapesIntersect", "shape a (box): the pose is not finite"});
+        ropras::test::expectErrorMentions([&] { shapesIntersect(box, bad, box, origin); },
+                                          {"shapesIntersect", "shape a (box): the pose is not finite"});
         const Shape cloud = Shape::pointCloud(nullptr);
-        ropras::test::expectErrorMentions([&] { shapesIntersect(box, origin, cloud, origin); }, {"shapesIntersect", "shape b (point cloud): point clouds are not supported"});
+        ropras::test::expectErrorMentions([&] { shapesIntersect(box, origin, cloud, origin); },
+                                          {"shapesIntersect", "shape b (point cloud): point clouds are not supported"});
     }
 }  // namespace ropras::ompl_ext
