@@ -15,7 +15,8 @@ namespace ropras::ompl_ext
     {
         void requirePrimitive(const Shape &s, const Eigen::Isometry3d &pose, const char *which)
         {
-            const std::string where = std::string("shapesIntersect: shape ") + which + " (" + shapeTypeName(s.type) + ")";
+            const std::string where =
+                std::string("shapesIntersect: shape ") + which + " (" + shapeTypeName(s.type) + ")";
             if (s.type == ShapeType::PointCloud)
                 throw Error(where + ": point clouds are not supported");
             const bool sizes = std::isfinite(s.radius) && s.radius >= 0.0 && std::isfinite(s.length) &&
