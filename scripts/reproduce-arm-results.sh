@@ -54,7 +54,8 @@ for budget in "${rd_budgets[@]}"; do
   run rd-$tag-ropras3-d $RD --solver ropras3 $opt
 done
 # Ray-Detect with twice the position and three times the yaw uncertainty (a variant; doc/results.md: ARM_SEED=9700,
-# 100 episodes): B-plan, R-POMCP and ROP-RAS3 Dynamic at 50 simulations per call
+# 100 episodes): B-plan, R-POMCP and ROP-RAS3 Dynamic at 50 simulations per call (with its own --config: leave
+# ARM_EXTRA free of --config for these rows)
 printf '%s\n' '{"initial_sigma_pose": [0.1, 0.1, 0, 0, 0, 0.3]}' > rd-wide.json
 for solver in bplan rpomcp ropras3; do
   # shellcheck disable=SC2086

@@ -174,7 +174,7 @@ namespace ropras::ompl_ext
         Shape negative = Shape::sphere(0.1);
         negative.radius = -1.0;
         ropras::test::expectErrorMentions([&] { shapesIntersect(negative, origin, box, origin); },
-                                          {"shapesIntersect", "shape a (sphere): a size is negative"});
+                                          {"shapesIntersect", "shape a (sphere): a size is negative", "radius -1"});
         Shape nanBox = box;
         nanBox.extents.x() = std::nan("");
         ropras::test::expectErrorMentions([&] { shapesIntersect(box, origin, nanBox, origin); },

@@ -623,9 +623,10 @@ namespace ropras::scenarios
             }
         }
 
-        // a second IK search (other random points and restarts) finds the goal again in nearly every drawn state
-        // (IK is incomplete: a reachable goal is missed now and then)
-        EXPECT_GE(confirmed, drawn * 95 / 100) << confirmed << " of " << drawn;
+        // a second IK search (other random points and restarts) finds the goal again in most drawn states; IK is
+        // incomplete (it misses a reachable goal about as often as a raw draw is unreachable), so this only shows
+        // that drawn states are not worse than raw ones, not the filter itself (see BadConfigurationValues...)
+        EXPECT_GE(confirmed, drawn * 9 / 10) << confirmed << " of " << drawn;
 
         // constructed impossible layouts
         State onCan = model.nominalState();
@@ -643,6 +644,10 @@ namespace ropras::scenarios
         State nan = model.nominalState();
         nan.poses[1][5] = std::nan("");
         EXPECT_FALSE(model.physicallyPossible(nan));
+        pomdp::Rng ik(4);
+        EXPECT_FALSE(model.goalReachable(nan, ik));
+        EXPECT_FALSE(model.goalReachable(onCan, ik));
+        EXPECT_TRUE(model.goalReachable(model.nominalState(), ik));
     }
 
     TEST(RayDetectTest, BadConfigurationValuesNameTheKey)
@@ -681,13 +686,14 @@ namespace ropras::scenarios
         expectError({{"end_effector", "panda_nose"}}, "panda_nose");
         expectError({{"transition_sigma", -0.02}}, "\"transition_sigma\"");
         expectError({{"reachable_goal", 3}}, "\"reachable_goal\"");
-        expectError({{"goal_point", {1.6, 0, 0.4}}}, "\"goal_point\" has no collision-free configuration");
+        expectError({{"goal_point", {1.6, 0, 0.4}}},
+                    "\"goal_point\" (1.600000, 0.000000, 0.400000) has no collision-free");
         // two obstacles at the same place
         nlohmann::json stacked = nlohmann::json::parse(R"([
             {"pose": [0.55, 0.12, 0.368, 0, 0, 0], "extents": [0.2, 0.02, 0.3]},
             {"pose": [0.55, 0.12, 0.368, 0, 0, 0], "extents": [0.02, 0.2, 0.3]},
             {"pose": [0.75, 0.25, 0.368, 0, 0, 0.3], "extents": [0.2, 0.05, 0.3]},
             {"pose": [0.75, -0.25, 0.368, 0, 0, -0.3], "extents": [0.2, 0.05, 0.3]}])");
-        expectError({{"obstacles", stacked}}, "\"obstacles\" at their nominal poses overlap");
+        expectError({{"obstacles", stacked}}, "\"obstacles\" at their nominal poses: obstacle 1 overlaps obstacle 0");
     }
 }  // namespace ropras::scenarios

@@ -13,18 +13,29 @@ namespace ropras::ompl_ext
 {
     namespace
     {
+        std::string where(const Shape &s, const char *which)
+        {
+            return std::string("shapesIntersect: shape ") + which + " (" + shapeTypeName(s.type) + ")";
+        }
+
+        std::string numbers(const Shape &s)
+        {
+            return "radius " + std::to_string(s.radius) + ", length " + std::to_string(s.length) + ", extents (" +
+                   std::to_string(s.extents.x()) + ", " + std::to_string(s.extents.y()) + ", " +
+                   std::to_string(s.extents.z()) + ")";
+        }
+
+        /// the message is built only when a check fails (a valid call does not allocate for it)
         void requirePrimitive(const Shape &s, const Eigen::Isometry3d &pose, const char *which)
         {
-            const std::string where =
-                std::string("shapesIntersect: shape ") + which + " (" + shapeTypeName(s.type) + ")";
             if (s.type == ShapeType::PointCloud)
-                throw Error(where + ": point clouds are not supported");
+                throw Error(where(s, which) + ": point clouds are not supported");
             const bool sizes = std::isfinite(s.radius) && s.radius >= 0.0 && std::isfinite(s.length) &&
                                s.length >= 0.0 && s.extents.allFinite() && (s.extents.array() >= 0.0).all();
             if (!sizes)
-                throw Error(where + ": a size is negative or not finite");
+                throw Error(where(s, which) + ": a size is negative or not finite (" + numbers(s) + ")");
             if (!pose.matrix().allFinite() || !s.pose.matrix().allFinite())
-                throw Error(where + ": the pose is not finite");
+                throw Error(where(s, which) + ": the pose is not finite");
         }
     }  // namespace
 

@@ -103,11 +103,16 @@ namespace ropras::scenarios
         {
             throw Error(where("goal_point") + "is inside an obstacle");
         }
-        if (!physicallyPossible(nominalState()))
+        int first = -1, second = -1;
+        if (layoutConflict(nominalState(), first, second))
         {
-            throw Error(where("obstacles") +
-                        "at their nominal poses overlap each other or the can, or reach into the goal ball "
-                        "(goal_point, goal_radius)");
+            const std::string what = second == CAN         ? "the can (target)"
+                                     : second == GOAL_BALL ? "the goal ball (goal_point, goal_radius " +
+                                                                 std::to_string(config_.goalRadius) + " m)"
+                                     : second >= 0 ? "obstacle " + std::to_string(second)
+                                                   : "nothing (its pose is not finite)";
+            throw Error(where("obstacles") + "at their nominal poses: obstacle " + std::to_string(first) +
+                        " overlaps " + what);
         }
         ik_ = std::make_shared<const ompl_ext::InverseKinematics>(arm_->endEffectorChain());
         goalIk_.restarts = 100;
@@ -116,9 +121,12 @@ namespace ropras::scenarios
         pomdp::Rng probe(1);
         if (config_.reachableGoal && !goalReachable(nominalState(), probe))
         {
-            throw Error(where("goal_point") +
-                        "has no collision-free configuration within planning.ik_radius_fraction * "
-                        "goal_radius of it at the nominal obstacle poses (IK)");
+            const auto &g = config_.goalPoint;
+            throw Error(where("goal_point") + "(" + std::to_string(g[0]) + ", " + std::to_string(g[1]) + ", " +
+                        std::to_string(g[2]) + ") has no collision-free configuration within " +
+                        std::to_string(config_.ikRadiusFraction * config_.goalRadius) +
+                        " m of it at the nominal obstacle poses (position IK, " + std::to_string(config_.ikPoints) +
+                        " points x 100 restarts)");
         }
         const double s = config_.observationSigma;
         logNorm_ = -static_cast<double>(ARM_DOF) * std::log(std::sqrt(2.0 * PI) * s);
@@ -268,46 +276,66 @@ namespace ropras::scenarios
         return s;
     }
 
-    bool RayDetectModel::physicallyPossible(const State &s) const noexcept
+    bool RayDetectModel::layoutConflict(const State &s, int &first, int &second) const noexcept
     {
+        first = second = -1;
         try
         {
+            for (std::size_t k = 0; k < RAY_DETECT_OBSTACLES; ++k)
+            {
+                if (!std::all_of(s.poses[k], s.poses[k] + 6, [](double v) { return std::isfinite(v); }))
+                {
+                    first = static_cast<int>(k);
+                    second = NON_FINITE;
+                    return true;
+                }
+            }
             const ompl_ext::Shape can = ompl_ext::Shape::cylinder(config_.targetRadius, config_.targetLength);
             const Eigen::Isometry3d canPose(Eigen::Translation3d(vec(config_.targetCenter)));
+            const ompl_ext::Shape ball = ompl_ext::Shape::sphere(config_.goalRadius);
+            const Eigen::Isometry3d ballPose(Eigen::Translation3d(vec(config_.goalPoint)));
             Eigen::Isometry3d poses[RAY_DETECT_OBSTACLES];
             ompl_ext::Shape boxes[RAY_DETECT_OBSTACLES];
             for (std::size_t k = 0; k < RAY_DETECT_OBSTACLES; ++k)
             {
+                first = static_cast<int>(k);
                 poses[k] = rayDetectPose(s.poses[k]);
                 boxes[k] = ompl_ext::Shape::box(vec(config_.obstacles[k].extents));
+                second = CAN;
                 if (ompl_ext::shapesIntersect(boxes[k], poses[k], can, canPose))
                 {
-                    return false;
+                    return true;
+                }
+                // the goal ball against the obstacles (the constructor checks the goal point against the table
+                // and the can, which do not move)
+                second = GOAL_BALL;
+                if (ompl_ext::shapesIntersect(boxes[k], poses[k], ball, ballPose))
+                {
+                    return true;
                 }
                 for (std::size_t j = 0; j < k; ++j)
                 {
+                    second = static_cast<int>(j);
                     if (ompl_ext::shapesIntersect(boxes[k], poses[k], boxes[j], poses[j]))
                     {
-                        return false;
+                        return true;
                     }
                 }
             }
-            // the goal ball against the obstacles (the table and the can are fixed and checked at construction)
-            const Eigen::Vector3d goal = vec(config_.goalPoint);
-            for (std::size_t k = 0; k < RAY_DETECT_OBSTACLES; ++k)
-            {
-                const ompl_ext::Shape ball = ompl_ext::Shape::sphere(config_.goalRadius);
-                if (ompl_ext::shapesIntersect(boxes[k], poses[k], ball, Eigen::Isometry3d(Eigen::Translation3d(goal))))
-                {
-                    return false;
-                }
-            }
+            first = second = -1;
+            return false;
+        }
+        catch (const std::exception &)
+        {
+            second = NON_FINITE;  // not reached for finite poses (bad_alloc aside): not shown possible
             return true;
         }
-        catch (const Error &)
-        {
-            return false;  // a non-finite pose
-        }
+    }
+
+    bool RayDetectModel::physicallyPossible(const State &s) const noexcept
+    {
+        int first = -1, second = -1;
+        return !layoutConflict(s, first, second);
     }
 
     bool RayDetectModel::goalReachable(const State &s, pomdp::Rng &rng) const noexcept
@@ -318,6 +346,10 @@ namespace ropras::scenarios
             std::unique_ptr<ompl_ext::IkWorkspace> workspace;
         };
         thread_local ThreadIk cache;
+        if (!physicallyPossible(s))
+        {
+            return false;  // includes non-finite poses
+        }
         try
         {
             if (cache.instance != instance_ || !cache.workspace)

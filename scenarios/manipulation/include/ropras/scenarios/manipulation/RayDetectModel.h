@@ -115,19 +115,26 @@ namespace ropras::scenarios
         }
         /// the initial state at the configured (nominal) poses and the start configuration
         State nominalState() const noexcept;
-        /** \brief Whether the obstacles' layout in \a s can exist: no obstacle overlaps another one or the can, and
-            none reaches into the goal ball (goal_point, goal_radius). Exact box, cylinder and sphere tests
-            (ompl_ext::shapesIntersect and Environment::signedDistance), not the arm's sphere model. The initial
-            belief, the true world and reinvigoration draw only such layouts. */
+        /** \brief Whether the obstacles' layout in \a s can exist: finite poses, no obstacle overlapping another
+            one or the can, none reaching into the goal ball (goal_point, goal_radius). Box, cylinder and sphere
+            tests through ompl_ext::shapesIntersect (FCL), not the arm's sphere model. The initial belief, the true
+            world and reinvigoration draw only such layouts. */
         bool physicallyPossible(const State &s) const noexcept;
         /** \brief Whether the arm can reach the goal in \a s: a configuration collision-free in the state's scene
             (no margin) whose end effector is within planning.ik_radius_fraction * goal_radius of goal_point, found
-            by position IK from the start configuration (planning.ik_points random points of that ball,
-            planning.ik_restarts restarts each). IK is incomplete: false means that none was found. With
-            reachable_goal (default) the initial belief and the true world draw only states where it holds. */
+            by position IK from the start configuration (planning.ik_points random points of that ball, 100
+            restarts each, tolerance 0.1 mm). False for a layout that is not physically possible. IK is incomplete:
+            false means that none was found. With reachable_goal (default) the initial belief and the true world
+            draw only states where it holds. */
         bool goalReachable(const State &s, pomdp::Rng &rng) const noexcept;
 
     private:
+        /// what layoutConflict's \a second names besides an obstacle index
+        static constexpr int CAN = -2, GOAL_BALL = -3, NON_FINITE = -4;
+        /** \brief The first conflict of \a s's layout (physicallyPossible): obstacle \a first overlaps obstacle
+            \a second (>= 0), CAN or GOAL_BALL, or has a NON_FINITE pose; false (and -1, -1) when there is none. */
+        bool layoutConflict(const State &s, int &first, int &second) const noexcept;
+
         RayDetectConfig config_;
         std::shared_ptr<const PandaArm> arm_;
         std::shared_ptr<const ompl_ext::Environment> static_;
