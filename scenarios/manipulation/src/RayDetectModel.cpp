@@ -340,16 +340,17 @@ namespace ropras::scenarios
 
     bool RayDetectModel::goalReachable(const State &s, pomdp::Rng &rng) const noexcept
     {
+        return physicallyPossible(s) && reachableLayout(s, rng);  // a non-finite pose never reaches the IK
+    }
+
+    bool RayDetectModel::reachableLayout(const State &s, pomdp::Rng &rng) const noexcept
+    {
         struct ThreadIk
         {
             std::uint64_t instance{0};
             std::unique_ptr<ompl_ext::IkWorkspace> workspace;
         };
         thread_local ThreadIk cache;
-        if (!physicallyPossible(s))
-        {
-            return false;  // includes non-finite poses
-        }
         try
         {
             if (cache.instance != instance_ || !cache.workspace)
@@ -402,7 +403,7 @@ namespace ropras::scenarios
                 }
             }
             if (physicallyPossible(s) && arm_->checker()->isValid(scene(s), s.q) &&
-                (!config_.reachableGoal || goalReachable(s, rng)))
+                (!config_.reachableGoal || reachableLayout(s, rng)))
             {
                 return s;
             }

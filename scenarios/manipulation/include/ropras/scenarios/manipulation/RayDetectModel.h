@@ -134,6 +134,8 @@ namespace ropras::scenarios
         /** \brief The first conflict of \a s's layout (physicallyPossible): obstacle \a first overlaps obstacle
             \a second (>= 0), CAN or GOAL_BALL, or has a NON_FINITE pose; false (and -1, -1) when there is none. */
         bool layoutConflict(const State &s, int &first, int &second) const noexcept;
+        /// goalReachable for a layout already known to be physically possible
+        bool reachableLayout(const State &s, pomdp::Rng &rng) const noexcept;
 
         RayDetectConfig config_;
         std::shared_ptr<const PandaArm> arm_;
