@@ -7,6 +7,7 @@
 
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/kinematics/CollisionFreePredicate.h"
+#include "ropras/scenarios/manipulation/BallIk.h"
 
 namespace ropras::scenarios
 {
@@ -89,26 +90,14 @@ namespace ropras::scenarios
             std::copy(chosen.begin(), chosen.end(), q);
             return true;
         }
-        const double r = settings_.radiusFraction * radius;
-        for (std::size_t attempt = 0; attempt < settings_.points; ++attempt)
+        if (solvePositionInBall(ik_, Eigen::Vector3d(center[0], center[1], center[2]),
+                                settings_.radiusFraction * radius, settings_.points, seed, rng_, workspace_, options_,
+                                &valid_, q, &solves_))
         {
-            // a point uniform in the ball of radius r (rejection from the cube)
-            Eigen::Vector3d offset;
-            do
-            {
-                offset = Eigen::Vector3d(rng_.uniform(-1, 1), rng_.uniform(-1, 1), rng_.uniform(-1, 1));
-            } while (offset.squaredNorm() > 1.0);
-            const Eigen::Vector3d point = Eigen::Vector3d(center[0], center[1], center[2]) + r * offset;
-            ++solves_;
-            const auto result =
-                ik_.solve(ompl_ext::IkTarget::position(point), seed, rng_, workspace_, q, options_, &valid_);
-            if (result.status == ompl_ext::IkStatus::Solved)
-            {
-                std::array<double, ARM_DOF> solution{};
-                std::copy(q, q + ARM_DOF, solution.begin());
-                pool->solutions.push_back(solution);
-                return true;
-            }
+            std::array<double, ARM_DOF> solution{};
+            std::copy(q, q + ARM_DOF, solution.begin());
+            pool->solutions.push_back(solution);
+            return true;
         }
         if (!pool->solutions.empty())
         {

@@ -8,9 +8,9 @@
 
 #include "ropras/core/Error.h"
 #include "ropras/ompl_ext/kinematics/CollisionFreePredicate.h"
-#include "ropras/ompl_ext/kinematics/IkTarget.h"
 #include "ropras/ompl_ext/scene/EnvironmentQueries.h"
 #include "ropras/ompl_ext/scene/ShapeIntersection.h"
+#include "ropras/scenarios/manipulation/BallIk.h"
 
 namespace ropras::scenarios
 {
@@ -103,6 +103,14 @@ namespace ropras::scenarios
         {
             throw Error(where("goal_point") + "is inside an obstacle");
         }
+        for (std::size_t k = 0; k < RAY_DETECT_OBSTACLES; ++k)
+        {
+            boxShapes_[k] = ompl_ext::Shape::box(vec(config_.obstacles[k].extents));
+        }
+        canShape_ = ompl_ext::Shape::cylinder(config_.targetRadius, config_.targetLength);
+        canPose_ = Eigen::Translation3d(vec(config_.targetCenter));
+        ballShape_ = ompl_ext::Shape::sphere(config_.goalRadius);
+        ballPose_ = Eigen::Translation3d(vec(config_.goalPoint));
         int first = -1, second = -1;
         if (layoutConflict(nominalState(), first, second))
         {
@@ -290,26 +298,21 @@ namespace ropras::scenarios
                     return true;
                 }
             }
-            const ompl_ext::Shape can = ompl_ext::Shape::cylinder(config_.targetRadius, config_.targetLength);
-            const Eigen::Isometry3d canPose(Eigen::Translation3d(vec(config_.targetCenter)));
-            const ompl_ext::Shape ball = ompl_ext::Shape::sphere(config_.goalRadius);
-            const Eigen::Isometry3d ballPose(Eigen::Translation3d(vec(config_.goalPoint)));
             Eigen::Isometry3d poses[RAY_DETECT_OBSTACLES];
-            ompl_ext::Shape boxes[RAY_DETECT_OBSTACLES];
+            const auto &boxes = boxShapes_;
             for (std::size_t k = 0; k < RAY_DETECT_OBSTACLES; ++k)
             {
                 first = static_cast<int>(k);
                 poses[k] = rayDetectPose(s.poses[k]);
-                boxes[k] = ompl_ext::Shape::box(vec(config_.obstacles[k].extents));
                 second = CAN;
-                if (ompl_ext::shapesIntersect(boxes[k], poses[k], can, canPose))
+                if (ompl_ext::shapesIntersect(boxes[k], poses[k], canShape_, canPose_))
                 {
                     return true;
                 }
                 // the goal ball against the obstacles (the constructor checks the goal point against the table
                 // and the can, which do not move)
                 second = GOAL_BALL;
-                if (ompl_ext::shapesIntersect(boxes[k], poses[k], ball, ballPose))
+                if (ompl_ext::shapesIntersect(boxes[k], poses[k], ballShape_, ballPose_))
                 {
                     return true;
                 }
@@ -359,22 +362,10 @@ namespace ropras::scenarios
                 cache.instance = instance_;
             }
             const ompl_ext::ConfigurationPredicate free = ompl_ext::collisionFreePredicate(*arm_->checker(), scene(s));
-            const double r = config_.ikRadiusFraction * config_.goalRadius;
             double q[ARM_DOF];
-            for (std::size_t attempt = 0; attempt < config_.ikPoints; ++attempt)
-            {
-                Eigen::Vector3d offset;
-                do
-                {
-                    offset = Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
-                } while (offset.squaredNorm() > 1.0);
-                const auto target = ompl_ext::IkTarget::position(vec(config_.goalPoint) + r * offset);
-                if (ik_->solve(target, config_.start.data(), rng, *cache.workspace, q, goalIk_, &free).status ==
-                    ompl_ext::IkStatus::Solved)
-                {
-                    return true;
-                }
-            }
+            return solvePositionInBall(*ik_, vec(config_.goalPoint), config_.ikRadiusFraction * config_.goalRadius,
+                                       config_.ikPoints, config_.start.data(), rng, *cache.workspace, goalIk_, &free,
+                                       q);
         }
         catch (const std::exception &)
         {

@@ -9,6 +9,7 @@
 #include "ropras/ompl_ext/kinematics/CollisionFreePredicate.h"
 #include "ropras/ompl_ext/scene/EnvironmentQueries.h"
 #include "ropras/scenarios/manipulation/ArmPlanning.h"
+#include "ropras/scenarios/manipulation/BallIk.h"
 
 namespace ropras::scenarios
 {
@@ -204,23 +205,8 @@ namespace ropras::scenarios
     bool RayDetectGoalSampler::solveGoal(const double *seed, double *q) noexcept
     {
         const RayDetectConfig &c = model_->config();
-        const double r = c.ikRadiusFraction * c.goalRadius;
-        for (std::size_t attempt = 0; attempt < c.ikPoints; ++attempt)
-        {
-            Eigen::Vector3d offset;
-            do
-            {
-                offset = Eigen::Vector3d(rng_.uniform(-1, 1), rng_.uniform(-1, 1), rng_.uniform(-1, 1));
-            } while (offset.squaredNorm() > 1.0);
-            ++solves_;
-            const auto result = ik_.solve(ompl_ext::IkTarget::position(vec(c.goalPoint) + r * offset), seed, rng_,
-                                          workspace_, q, goalOptions_, &free_);
-            if (result.status == ompl_ext::IkStatus::Solved)
-            {
-                return true;
-            }
-        }
-        return false;
+        return solvePositionInBall(ik_, vec(c.goalPoint), c.ikRadiusFraction * c.goalRadius, c.ikPoints, seed, rng_,
+                                   workspace_, goalOptions_, &free_, q, &solves_);
     }
 
     bool RayDetectGoalSampler::solveLook(const RayDetectModel::State &particle, int object, double *q) noexcept

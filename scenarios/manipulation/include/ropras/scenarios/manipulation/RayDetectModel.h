@@ -9,6 +9,7 @@
 
 #include "ropras/ompl_ext/kinematics/InverseKinematics.h"
 #include "ropras/ompl_ext/scene/Environment.h"
+#include "ropras/ompl_ext/scene/Shape.h"
 #include "ropras/pomdp/Model.h"
 #include "ropras/pomdp/Rng.h"
 #include "ropras/scenarios/manipulation/PandaArm.h"
@@ -144,6 +145,10 @@ namespace ropras::scenarios
         std::uint64_t instance_{0};
         double logNorm_{0.0};
         std::array<double, 6> kernelSigma_{};
+        /// physicallyPossible's fixed shapes: the boxes (posed per state), the can and the goal ball where they stand
+        std::array<ompl_ext::Shape, RAY_DETECT_OBSTACLES> boxShapes_;
+        ompl_ext::Shape canShape_, ballShape_;
+        Eigen::Isometry3d canPose_{Eigen::Isometry3d::Identity()}, ballPose_{Eigen::Isometry3d::Identity()};
         std::shared_ptr<const ompl_ext::InverseKinematics> ik_;  ///< the end effector's chain (goalReachable)
         ompl_ext::IkOptions goalIk_;
     };
