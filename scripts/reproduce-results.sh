@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Reproduces the navigation tables of doc/results.md: every scenario x solver, 30 episodes (fewer for the solvers
-# whose episodes run to the horizon, see doc/results.md), seed 1, 2 threads.
+# whose episodes run to the horizon, see doc/results.md), seed 1, 2 threads (SEED, EPISODES and THREADS change them).
 # Usage: scripts/reproduce-results.sh [OUT_DIR] (default: results/); then `ropras table OUT_DIR/<prefix>-*.jsonl`.
 # Environment:
 #   BUDGET=tenth (default) a tenth of the paper's planning time per call (each scenario's default: Light-Dark
@@ -9,6 +9,10 @@
 #   SCENARIOS    the scenarios to run, any of "light-dark multi-drone maze2d random3d stretch-crossing" (default:
 #                all of them; random3d stands for its four problems)
 #   SOLVERS      the solvers to run, any of "ropras3 rpomcp bplan pomcp refbasic" (default: all of them)
+#   SEED         the run seed (default 1; doc/results.md's third Random3D seed is 6161)
+#   EPISODES     episodes of the rows that have 30 by default (POMCP and Ref-Basic keep their own counts)
+#   THREADS      worker threads per run (default 2; the time-budgeted rows depend on the load, see
+#                doc/running-experiments.md)
 #   ROPRAS       the ropras executable (default: build/bin/ropras)
 set -u
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -17,6 +21,12 @@ out=${1:-results}
 budget=${BUDGET:-tenth}
 scenarios=" ${SCENARIOS:-light-dark multi-drone maze2d random3d stretch-crossing} "
 solvers=" ${SOLVERS:-ropras3 rpomcp bplan pomcp refbasic} "
+seed=${SEED:-1}
+episodes=${EPISODES:-30}
+threads=${THREADS:-2}
+for value in "$seed" "$episodes" "$threads"; do
+  [[ "$value" =~ ^[0-9]+$ ]] || { echo "reproduce-results.sh: SEED, EPISODES and THREADS must be whole numbers, not '$value'" >&2; exit 2; }
+done
 case "$budget" in
   tenth) ld_time=() other_time=() ;;
   paper) ld_time=(--plan-time 0.1) other_time=(--plan-time 1) ;;
@@ -31,7 +41,8 @@ run() { # name episodes args... (--solver S among them)
   shift 2
   solver=$(printf '%s\n' "$@" | grep -A1 -x -- --solver | tail -n 1)
   [[ "$solvers" == *" $solver "* ]] || return 0
-  "$R" run --episodes "$n" --threads 2 --seed 1 --quiet --out "$name.jsonl" "$@" > "$name.table"
+  [ "$n" = 30 ] && n=$episodes
+  "$R" run --episodes "$n" --threads "$threads" --seed "$seed" --quiet --out "$name.jsonl" "$@" > "$name.table"
 }
 echo '{"termination_evidence": true}' > termination-evidence.json
 
@@ -82,5 +93,5 @@ for group in ld md mz 'r[1-4]'; do
 done
 # stretch-crossing: its own table (collisions and too-close steps from the recordings), at its own budget
 if wanted stretch-crossing; then
-  ROPRAS="$R" "$here/scripts/crossing-results.sh" --episodes 30 --seed 1 --threads 2 --out crossing
+  ROPRAS="$R" "$here/scripts/crossing-results.sh" --episodes "$episodes" --seed "$seed" --threads "$threads" --out crossing
 fi
