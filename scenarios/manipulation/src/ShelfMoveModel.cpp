@@ -76,7 +76,10 @@ namespace ropras::scenarios
                 body.name = "held_can";
                 body.link = config_.endEffector;
                 body.pose = graspTransform();
-                // a chain of spheres inside the can, held_clearance from its side and ends, along its axis (z)
+                // a chain of spheres inside the can, held_clearance from its side and ends, along its axis (z);
+                // the planner's chain is grown by the margin like every other shape of its scene: it then keeps
+                // 2 margin from the true shelf and cans, which covers the rims of the world's held cylinder
+                // (they stick out of the chain's end spheres by (r - c)(sqrt 2 - 1), 9.9 mm at the defaults)
                 const double c = config_.heldClearance;
                 const double rho = config_.canRadius - c;
                 const double span = std::max(0.0, 0.5 * config_.canLength - c - rho);
@@ -85,7 +88,7 @@ namespace ropras::scenarios
                 {
                     Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
                     at.translation().z() = n == 1 ? 0.0 : -span + 2.0 * span * i / (n - 1);
-                    body.shapes.push_back(ompl_ext::Shape::sphere(rho, at));
+                    body.shapes.push_back(ompl_ext::Shape::sphere(rho + margin, at));
                 }
                 for (const char *link : TOUCH_LINKS)
                 {
