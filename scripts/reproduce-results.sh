@@ -10,7 +10,8 @@
 #                all of them; random3d stands for its four problems)
 #   SOLVERS      the solvers to run, any of "ropras3 rpomcp bplan pomcp refbasic" (default: all of them)
 #   SEED         the run seed (default 1; doc/results.md's third Random3D seed is 6161)
-#   EPISODES     episodes of the rows that have 30 by default (POMCP and Ref-Basic keep their own counts)
+#   EPISODES     episodes of the rows that have 30 by default (POMCP and Ref-Basic on the long horizons keep
+#                their own counts)
 #   THREADS      worker threads per run (default 2; the time-budgeted rows depend on the load, see
 #                doc/running-experiments.md)
 #   ROPRAS       the ropras executable (default: build/bin/ropras)
@@ -41,7 +42,6 @@ run() { # name episodes args... (--solver S among them)
   shift 2
   solver=$(printf '%s\n' "$@" | grep -A1 -x -- --solver | tail -n 1)
   [[ "$solvers" == *" $solver "* ]] || return 0
-  [ "$n" = 30 ] && n=$episodes
   "$R" run --episodes "$n" --threads "$threads" --seed "$seed" --quiet --out "$name.jsonl" "$@" > "$name.table"
 }
 echo '{"termination_evidence": true}' > termination-evidence.json
@@ -51,24 +51,24 @@ echo '{"termination_evidence": true}' > termination-evidence.json
 goal_rows() {
   local p=$1 pomcp_n=$2 refbasic_n=$3
   shift 3
-  run "$p-ropras3-d" 30 "$@" --solver ropras3
-  run "$p-ropras3-u" 30 "$@" --solver ropras3 --heuristic uniform
-  run "$p-rpomcp-d" 30 "$@" --solver rpomcp
-  run "$p-bplan-d" 30 "$@" --solver bplan
+  run "$p-ropras3-d" "$episodes" "$@" --solver ropras3
+  run "$p-ropras3-u" "$episodes" "$@" --solver ropras3 --heuristic uniform
+  run "$p-rpomcp-d" "$episodes" "$@" --solver rpomcp
+  run "$p-bplan-d" "$episodes" "$@" --solver bplan
   run "$p-refbasic" "$refbasic_n" "$@" --solver refbasic
   run "$p-pomcp" "$pomcp_n" "$@" --solver pomcp
-  run "$p-te-ropras3-d" 30 "$@" --solver ropras3 --config termination-evidence.json
+  run "$p-te-ropras3-d" "$episodes" "$@" --solver ropras3 --config termination-evidence.json
 }
 
 if wanted light-dark; then
-  goal_rows ld 30 30 --scenario light-dark "${ld_time[@]}"
+  goal_rows ld "$episodes" "$episodes" --scenario light-dark "${ld_time[@]}"
 fi
 
 if wanted multi-drone; then
   MD=(--scenario multi-drone "${other_time[@]}")
-  run md-ropras3-d 30 "${MD[@]}" --solver ropras3
-  run md-rpomcp-d 30 "${MD[@]}" --solver rpomcp
-  run md-bplan-d 30 "${MD[@]}" --solver bplan
+  run md-ropras3-d "$episodes" "${MD[@]}" --solver ropras3
+  run md-rpomcp-d "$episodes" "${MD[@]}" --solver rpomcp
+  run md-bplan-d "$episodes" "${MD[@]}" --solver bplan
   run md-refbasic 10 "${MD[@]}" --solver refbasic
   run md-pomcp 4 "${MD[@]}" --solver pomcp
 fi
@@ -80,9 +80,9 @@ fi
 if wanted random3d; then
   for k in 1 2 3 4; do
     S=(--scenario "random3d-$k" "${other_time[@]}")
-    run "r$k-ropras3-d" 30 "${S[@]}" --solver ropras3
-    run "r$k-bplan-d" 30 "${S[@]}" --solver bplan
-    run "r$k-rpomcp-d" 30 "${S[@]}" --solver rpomcp
+    run "r$k-ropras3-d" "$episodes" "${S[@]}" --solver ropras3
+    run "r$k-bplan-d" "$episodes" "${S[@]}" --solver bplan
+    run "r$k-rpomcp-d" "$episodes" "${S[@]}" --solver rpomcp
     run "r$k-refbasic" 4 "${S[@]}" --solver refbasic
     run "r$k-pomcp" 2 "${S[@]}" --solver pomcp
   done
