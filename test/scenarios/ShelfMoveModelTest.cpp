@@ -205,55 +205,70 @@ namespace ropras::scenarios
     // solution exactly when a blocker is reported, and the goal grasp has one in every case.
     TEST(ShelfMoveModel, TheGoalGraspsTheCanThatBlocksTheTargetUntilNoneDoes)
     {
-        const auto &m = *model();
-        const ShelfMoveTargetSpace space(model());
-        const State s0 = m.trueInitialState();
-        const int target = static_cast<int>(m.config().targetCan);
-        const auto moved = [&](const std::vector<std::pair<std::size_t, std::size_t>> &moves)
+        // the default approaches (straight and turned by +-15 and +-30 degrees), then the straight one alone
+        auto straightJson = defaultJson();
+        straightJson["planning"]["grasp_yaws"] = {0};
+        for (const bool straight : {false, true})
         {
-            State s = s0;
-            for (const auto &[can, slot] : moves)
-                for (int a = 0; a < 3; ++a)
-                    s.can[can][a] = m.config().slots[slot][static_cast<std::size_t>(a)];
-            return s;
-        };
-        struct Case
-        {
-            State state;
-            std::vector<int> blockers;  ///< the cans the goal may grasp first
-        };
-        const std::vector<Case> cases{{s0, {1, 2}},
-                                      {moved({{1, 3}}), {2}},
-                                      {moved({{2, 4}}), {1}},
-                                      {moved({{1, 3}, {2, 4}}), {}},
-                                      {moved({{1, 3}, {2, 0}, {3, 4}}), {}}};
-        for (std::size_t i = 0; i < cases.size(); ++i)
-        {
-            const State &s = cases[i].state;
-            ASSERT_TRUE(m.validState(s)) << i;
-            const int blocker = space.blockingCan(s);
-            const ShelfTarget goal = space.goal(s);
-            EXPECT_EQ(goal.kind, ShelfTarget::Kind::Grasp) << i;
-            double q[ARM_DOF];
-            if (cases[i].blockers.empty())
+            const auto m = straight ? makeModel(straightJson) : model();
+            const ShelfMoveTargetSpace space(m);
+            const State s0 = m->trueInitialState();
+            const int target = static_cast<int>(m->config().targetCan);
+            const auto moved = [&](const std::vector<std::pair<std::size_t, std::size_t>> &moves)
             {
-                EXPECT_EQ(blocker, -1) << i;
-                EXPECT_EQ(goal.can, target) << i;
-            }
-            else
+                State s = s0;
+                for (const auto &[can, slot] : moves)
+                    for (int a = 0; a < 3; ++a)
+                        s.can[can][a] = m->config().slots[slot][static_cast<std::size_t>(a)];
+                return s;
+            };
+            struct Case
             {
-                EXPECT_NE(std::find(cases[i].blockers.begin(), cases[i].blockers.end(), blocker),
-                          cases[i].blockers.end())
-                    << i << ": blocker " << blocker;
-                EXPECT_EQ(goal.can, blocker) << i;
-                EXPECT_FALSE(solveTarget(s, space.grasp(s, target), q)) << i << ": the target is blocked";
+                State state;
+                std::vector<int> blockers;  ///< the cans the goal may grasp first
+            };
+            // the rule reads the straight approach: with one front can moved, a turned approach may pass beside
+            // the other (can 2 moved: it does; can 1 moved: can 3 stands in the way), so with turned approaches the
+            // rule is conservative and the target's grasp is asserted impossible only while both front cans stand
+            const std::vector<Case> cases{{s0, {1, 2}},
+                                          {moved({{1, 3}}), {2}},
+                                          {moved({{2, 4}}), {1}},
+                                          {moved({{1, 3}, {2, 4}}), {}},
+                                          {moved({{1, 3}, {2, 0}, {3, 4}}), {}}};
+            for (std::size_t i = 0; i < cases.size(); ++i)
+            {
+                SCOPED_TRACE(std::string(straight ? "straight" : "turned") + " approaches, case " + std::to_string(i));
+                const State &s = cases[i].state;
+                ASSERT_TRUE(m->validState(s));
+                const int blocker = space.blockingCan(s);
+                const ShelfTarget goal = space.goal(s);
+                EXPECT_EQ(goal.kind, ShelfTarget::Kind::Grasp);
+                ShelfMoveIk ik(m, 30, 7);
+                const auto scene = m->makeScene(s, false);
+                double q[ARM_DOF];
+                if (cases[i].blockers.empty())
+                {
+                    EXPECT_EQ(blocker, -1);
+                    EXPECT_EQ(goal.can, target);
+                }
+                else
+                {
+                    EXPECT_NE(std::find(cases[i].blockers.begin(), cases[i].blockers.end(), blocker),
+                              cases[i].blockers.end())
+                        << "blocker " << blocker;
+                    EXPECT_EQ(goal.can, blocker);
+                    if (straight || i == 0)
+                    {
+                        EXPECT_FALSE(ik.solve(s, space.grasp(s, target), *scene, q)) << "the target is blocked";
+                    }
+                }
+                EXPECT_TRUE(ik.solve(s, goal, *scene, q)) << "the goal's grasp has an IK solution";
             }
-            EXPECT_TRUE(solveTarget(s, goal, q)) << i << ": the goal's grasp has an IK solution";
+            // holding a can, the goal is a slot again
+            State holding = s0;
+            holding.held = 1;
+            EXPECT_EQ(space.goal(holding).kind, ShelfTarget::Kind::Place);
         }
-        // holding a can, the goal is a slot again
-        State holding = s0;
-        holding.held = 1;
-        EXPECT_EQ(space.goal(holding).kind, ShelfTarget::Kind::Place);
     }
 
     TEST(ShelfMoveModel, GraspAttachesTheCanWhichFollowsTheHandAndPlaceSnapsItOntoTheSlot)
@@ -582,5 +597,154 @@ namespace ropras::scenarios
         j = defaultJson();
         j["planning"]["surprise"] = 1;
         expectError(j, "planning", "surprise");
+    }
+}  // namespace ropras::scenarios
+
+namespace ropras::scenarios
+{
+    namespace
+    {
+        /// the note's packed front: the target at the back, one can before it and two beside that one
+        nlohmann::json packedFrontJson()
+        {
+            auto json = test::shelfMoveJson();
+            json["cans"] = {{0.8, 0, 0.64}, {0.62, 0, 0.64}, {0.70, 0.08, 0.64}, {0.70, -0.08, 0.64}};
+            return json;
+        }
+
+        /// the packed front, grasped and placed with the approach straight along +x only (grasp_yaws [0])
+        nlohmann::json straightPackedFrontJson()
+        {
+            auto json = packedFrontJson();
+            json["planning"]["grasp_yaws"] = {0};
+            return json;
+        }
+
+        /// the packed front as the true world of seed 7100's failed episode drew it: cans 1 and 2 1.7 cm apart
+        void squeeze(State &s)
+        {
+            s.can[1][0] = 0.685;
+            s.can[1][1] = 0.001;
+            s.can[2][0] = 0.684;
+            s.can[2][1] = 0.078;
+        }
+    }  // namespace
+
+    TEST(ShelfMoveModel, AGraspableLayoutIsOneWhoseCansCanBeTakenOffOneAfterAnotherUntilTheTarget)
+    {
+        pomdp::Rng rng(23);
+        EXPECT_TRUE(model()->graspableLayout(model()->trueInitialState(), rng)) << "the default layout";
+        const auto packed = makeModel(straightPackedFrontJson());
+        State s = packed->trueInitialState();
+        EXPECT_TRUE(packed->graspableLayout(s, rng)) << "the packed front as configured";
+        squeeze(s);
+        ASSERT_TRUE(packed->validState(s)) << "physically possible: the cans do not touch";
+        EXPECT_FALSE(packed->graspableLayout(s, rng)) << "no straight approach fits between cans 1 and 2";
+        State held = packed->trueInitialState();
+        held.held = 1;
+        EXPECT_FALSE(packed->graspableLayout(held, rng)) << "a layout is judged with nothing held";
+    }
+
+    TEST(ShelfMoveModel, WithGraspableLayoutTheInitialBeliefDrawsOnlyGraspableLayouts)
+    {
+        auto json = straightPackedFrontJson();
+        const auto free = makeModel(json);
+        json["graspable_layout"] = true;
+        const auto graspable = makeModel(json);
+        pomdp::Rng draws(41), judge(43);
+        std::size_t rejected = 0;
+        const int n = 40;
+        for (int i = 0; i < n; ++i)
+        {
+            const State s = graspable->sampleInitialState(draws);
+            ASSERT_TRUE(graspable->validState(s));
+            EXPECT_TRUE(graspable->graspableLayout(s, judge)) << "draw " << i;
+            rejected += !free->graspableLayout(free->sampleInitialState(draws), judge);
+        }
+        // without the key, some draws of this layout cannot be cleared by straight grasps (initial_can_sigma 0.03)
+        EXPECT_GT(rejected, 0u);
+        // the configured layout itself must be graspable
+        json["cans"][1] = {0.685, 0.001, 0.64};
+        json["cans"][2] = {0.684, 0.078, 0.64};
+        try
+        {
+            makeModel(json);
+            ADD_FAILURE() << "no error for an ungraspable configured layout";
+        }
+        catch (const Error &e)
+        {
+            EXPECT_NE(std::string(e.what()).find("key \"cans\""), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("graspable_layout"), std::string::npos) << e.what();
+        }
+        json = straightPackedFrontJson();
+        json["graspable_layout"] = "yes";
+        EXPECT_THROW(makeModel(json), Error);
+    }
+}  // namespace ropras::scenarios
+
+namespace ropras::scenarios
+{
+    TEST(ShelfMoveModel, GraspYawsTurnTheApproachAndFindGraspsBetweenCloseCans)
+    {
+        auto json = packedFrontJson();
+        json["planning"]["grasp_yaws"] = {0, 15, -15, 30, -30};
+        const auto turned = makeModel(json);
+        ShelfMoveIk ik(turned, 24, 5);
+        const auto rotations = ik.graspOrientations();
+        ASSERT_EQ(rotations.size(), 10u);
+        const double PI = 3.14159265358979323846;
+        for (std::size_t i = 0; i < rotations.size(); ++i)
+        {
+            const Eigen::Matrix3d &r = rotations[i];
+            EXPECT_LT((r.transpose() * r - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+            EXPECT_NEAR(r.determinant(), 1.0, 1e-12);
+            EXPECT_NEAR(std::abs(r.col(0).z()), 1.0, 1e-12) << "x vertical";
+            const double yaw = std::atan2(r.col(2).y(), r.col(2).x());  // the approach is +x turned by the yaw
+            EXPECT_NEAR(yaw, ik.graspYaws()[i / 2], 1e-12);
+            EXPECT_NEAR(r.col(2).z(), 0.0, 1e-12);
+        }
+        EXPECT_NEAR(ik.graspYaws()[3], 30.0 * PI / 180.0, 1e-12);
+        // the packed front squeezed: no straight grasp of cans 1 and 2; turned ones exist, and the model's own grasp
+        // rule (graspableCan) accepts the IK's configuration
+        State s = turned->trueInitialState();
+        squeeze(s);
+        const auto scene = turned->makeScene(s, true);
+        int found = 0;
+        for (int k = 1; k <= 2; ++k)
+        {
+            ShelfTarget grasp;
+            grasp.can = k;
+            grasp.point = {{s.can[k][0], s.can[k][1], s.can[k][2]}};
+            double q[ARM_DOF];
+            ShelfMoveIk straight(makeModel(straightPackedFrontJson()), 24, 5);
+            EXPECT_FALSE(straight.solve(s, grasp, *scene, q)) << "can " << k;
+            if (!ik.solve(s, grasp, *scene, q))
+            {
+                continue;
+            }
+            ++found;
+            State at = s;
+            ShelfMoveModel::setJoints(at, q);
+            EXPECT_TRUE(turned->validState(at));
+            EXPECT_EQ(turned->graspableCan(at), k);
+        }
+        EXPECT_GE(found, 1);
+        pomdp::Rng rng(3);
+        EXPECT_TRUE(turned->graspableLayout(s, rng)) << "graspable_layout judges with the configured yaws";
+        // bad values name the key
+        for (const nlohmann::json &bad :
+             {nlohmann::json::array(), nlohmann::json({100}), nlohmann::json({"x"}), nlohmann::json(15)})
+        {
+            json["planning"]["grasp_yaws"] = bad;
+            try
+            {
+                makeModel(json);
+                ADD_FAILURE() << "no error for grasp_yaws " << bad.dump();
+            }
+            catch (const Error &e)
+            {
+                EXPECT_NE(std::string(e.what()).find("grasp_yaws"), std::string::npos) << e.what();
+            }
+        }
     }
 }  // namespace ropras::scenarios

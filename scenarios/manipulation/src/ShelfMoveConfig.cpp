@@ -63,6 +63,7 @@ namespace ropras::scenarios
                         "observation_sigma",
                         "initial_sigma",
                         "initial_can_sigma",
+                        "graspable_layout",
                         "reinvigorate_sigma",
                         "reinvigorate_can_sigma",
                         "reinvigorate_probability",
@@ -137,6 +138,7 @@ namespace ropras::scenarios
         c.observationSigma = r.within("observation_sigma", 1e-5, 1.0);
         c.initialSigma = r.within("initial_sigma", 0.0, 1.0);
         c.initialCanSigma = r.within("initial_can_sigma", 0.0, 0.5);
+        c.graspableLayout = r.boolean("graspable_layout");
         c.reinvigorateSigma = r.within("reinvigorate_sigma", 0.0, 1.0);
         c.reinvigorateCanSigma = r.within("reinvigorate_can_sigma", 0.0, 0.5);
         c.reinvigorateProbability = r.within("reinvigorate_probability", 0.0, 1.0);
@@ -150,7 +152,7 @@ namespace ropras::scenarios
         c.entropyBin = r.within("entropy_bin", 1e-4, 10.0);
         const ConfigReader p = r.sub("planning");
         p.requireKnown({"plan_seconds", "reference_plan_time", "margin", "planner_range", "ik_restarts",
-                        "sense_fraction", "place_lift", "blocking_halfwidth"});
+                        "sense_fraction", "place_lift", "blocking_halfwidth", "grasp_yaws"});
         c.planSeconds = p.positive("plan_seconds");
         c.referencePlanTime = p.positive("reference_plan_time");
         c.planningMargin = p.within("margin", 0.0, 0.1);
@@ -159,6 +161,18 @@ namespace ropras::scenarios
         c.senseFraction = p.within("sense_fraction", 0.0, 1.0);
         c.placeLift = p.within("place_lift", 0.0, 0.1);
         c.blockingHalfwidth = p.within("blocking_halfwidth", 0.0, 1.0);
+        c.graspYaws = p.numbers("grasp_yaws", 0);
+        if (c.graspYaws.empty() || c.graspYaws.size() > 16)
+        {
+            p.fail("grasp_yaws", "must list 1 to 16 angles (degrees), not " + std::to_string(c.graspYaws.size()));
+        }
+        for (const double yaw : c.graspYaws)
+        {
+            if (!(std::abs(yaw) <= 90.0))
+            {
+                p.fail("grasp_yaws", "has an angle outside [-90, 90] degrees: " + std::to_string(yaw));
+            }
+        }
         readWorld(r.sub("world"), c);
         const ConfigReader d = r.sub("defaults");
         for (const auto &item : r.at("defaults").items())

@@ -128,6 +128,13 @@ namespace ropras::scenarios
         {
             throw Error(where("start") + "is in collision (with the shelf, a can or itself)");
         }
+        pomdp::Rng probe(0x51e1f00dULL);
+        if (config_.graspableLayout && !graspableLayout(s0, probe))
+        {
+            throw Error(where("cans") +
+                        "with graspable_layout true the configured cans must be a graspable layout: no order of "
+                        "grasps found that frees the target (doc/scenario-shelf-move.md)");
+        }
         logNorm_ = -static_cast<double>(ARM_DOF) * std::log(std::sqrt(2.0 * PI) * config_.observationSigma);
     }
 
@@ -280,7 +287,7 @@ namespace ropras::scenarios
                 s.can[k][0] += config_.initialCanSigma * rng.normal();
                 s.can[k][1] += config_.initialCanSigma * rng.normal();
             }
-            if (validState(s))
+            if (validState(s) && (!config_.graspableLayout || graspableLayout(s, rng)))
             {
                 return s;
             }

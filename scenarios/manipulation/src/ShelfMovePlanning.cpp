@@ -38,23 +38,34 @@ namespace ropras::scenarios
           workspace_(ik_.makeWorkspace()),
           rng_(seed)
     {
+        for (const double degrees : model_->config().graspYaws)
+        {
+            yaws_.push_back(degrees * PI / 180.0);
+        }
         options_.restarts = restarts;
         options_.positionTolerance = 1e-4;
         options_.orientationTolerance = 1e-3;
         options_.validate();
     }
 
-    std::array<Eigen::Matrix3d, 2> ShelfMoveIk::graspOrientations() const
+    std::vector<Eigen::Matrix3d> ShelfMoveIk::graspOrientations() const
     {
         const auto &a = model_->config().approach;
-        const Eigen::Vector3d z(a[0], a[1], a[2]);
-        std::array<Eigen::Matrix3d, 2> out;
-        for (int i = 0; i < 2; ++i)
+        std::vector<Eigen::Matrix3d> out;
+        out.reserve(2 * yaws_.size());
+        for (const double yaw : yaws_)
         {
-            const Eigen::Vector3d x = (i == 0 ? -1.0 : 1.0) * Eigen::Vector3d::UnitZ();
-            out[static_cast<std::size_t>(i)].col(0) = x;
-            out[static_cast<std::size_t>(i)].col(1) = z.cross(x);
-            out[static_cast<std::size_t>(i)].col(2) = z;
+            const Eigen::Vector3d z =
+                Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) * Eigen::Vector3d(a[0], a[1], a[2]);
+            for (int i = 0; i < 2; ++i)
+            {
+                Eigen::Matrix3d r;
+                const Eigen::Vector3d x = (i == 0 ? -1.0 : 1.0) * Eigen::Vector3d::UnitZ();
+                r.col(0) = x;
+                r.col(1) = z.cross(x);
+                r.col(2) = z;
+                out.push_back(r);
+            }
         }
         return out;
     }

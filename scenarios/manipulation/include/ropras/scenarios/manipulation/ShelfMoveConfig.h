@@ -33,20 +33,23 @@ namespace ropras::scenarios
         std::vector<std::array<double, 3>> slots;              ///< "slots": can centres where a release lands
         std::size_t reservedSlot{1};                           ///< "reserved_slot": the target's slot (index)
         std::array<double, 3> approach{{1.0, 0.0, 0.0}};       ///< "grasp_approach": world approach axis
-        double graspOffset{0.015};            ///< "grasp_offset": the can's axis this far beyond the EE along its z
-        double graspTolerance{0.02};          ///< "grasp_tolerance": EE to the can's axis for a grasp
-        double graspAxisTolerance{0.2};       ///< "grasp_axis_tolerance": EE x axis to vertical (rad)
-        double placeTolerance{0.04};          ///< "place_tolerance": held can centre to a slot centre
-        double senseDistance{0.15};           ///< "sense_distance": EE to a can centre for a detection
-        double canObservationNoise{0.04};     ///< "can_observation_noise": U(-w, w) per axis
-        double observationSoftening{0.01};    ///< "observation_softening": Gaussian tail outside the box (m)
-        double step{0.1};                     ///< "step": L2 norm of a primitive dq
-        bool waypointActions{true};           ///< "action_mode": "waypoint" (true) or "delta"
-        bool repairOnDepletion{true};         ///< "depletion_recovery": "repair" (ShelfMoveRecovery) or "ignore"
-        double transitionSigma{0.001};        ///< "transition_sigma": N(0, s) per joint and step
-        double observationSigma{0.02};        ///< "observation_sigma": N(0, s) per observed joint
-        double initialSigma{0.001};           ///< "initial_sigma": joints in b0
-        double initialCanSigma{0.03};         ///< "initial_can_sigma": can x and y in b0
+        double graspOffset{0.015};          ///< "grasp_offset": the can's axis this far beyond the EE along its z
+        double graspTolerance{0.02};        ///< "grasp_tolerance": EE to the can's axis for a grasp
+        double graspAxisTolerance{0.2};     ///< "grasp_axis_tolerance": EE x axis to vertical (rad)
+        double placeTolerance{0.04};        ///< "place_tolerance": held can centre to a slot centre
+        double senseDistance{0.15};         ///< "sense_distance": EE to a can centre for a detection
+        double canObservationNoise{0.04};   ///< "can_observation_noise": U(-w, w) per axis
+        double observationSoftening{0.01};  ///< "observation_softening": Gaussian tail outside the box (m)
+        double step{0.1};                   ///< "step": L2 norm of a primitive dq
+        bool waypointActions{true};         ///< "action_mode": "waypoint" (true) or "delta"
+        bool repairOnDepletion{true};       ///< "depletion_recovery": "repair" (ShelfMoveRecovery) or "ignore"
+        double transitionSigma{0.001};      ///< "transition_sigma": N(0, s) per joint and step
+        double observationSigma{0.02};      ///< "observation_sigma": N(0, s) per observed joint
+        double initialSigma{0.001};         ///< "initial_sigma": joints in b0
+        double initialCanSigma{0.03};       ///< "initial_can_sigma": can x and y in b0
+        /// "graspable_layout": b0 and the true world draw only layouts whose cans can be taken off one after another
+        /// until the target is grasped (ShelfMoveModel::graspableLayout); false (default): every physically valid draw
+        bool graspableLayout{false};
         double reinvigorateSigma{0.001};      ///< "reinvigorate_sigma": joint jitter per particle
         double reinvigorateCanSigma{0.005};   ///< "reinvigorate_can_sigma": can x, y jitter per particle
         double reinvigorateProbability{0.1};  ///< "reinvigorate_probability": share of particles jittered
@@ -68,6 +71,8 @@ namespace ropras::scenarios
         double blockingHalfwidth{0.13};  ///< "planning.blocking_halfwidth": a can in front of the target within this
                                          ///< lateral distance blocks its grasp (the hand's half-width + a can radius)
         double placeLift{0.005};         ///< "planning.place_lift": release this far above the slot centre
+        /// "planning.grasp_yaws": the approach's turns about the vertical that grasp and place IK try (degrees)
+        std::vector<double> graspYaws{0.0};
         // "world": what really happens (ShelfMoveWorld, Bullet rigid-body dynamics) or the model as its own world
         bool bulletWorld{true};           ///< "world.type": "bullet" (default) or "model"
         double canMass{0.2};              ///< "world.can_mass" (kg)

@@ -142,6 +142,15 @@ namespace ropras::scenarios
         bool canPlacementValid(const State &s, std::size_t k) const noexcept;
         /// every can not held placed validly and the arm (with what it holds) collision-free
         bool validState(const State &s) const noexcept;
+        /** \brief Whether the cans of \a s (nothing held) can be taken off the shelf one after another until the
+            target is grasped: repeatedly, the target's grasp, else the first other can's grasp, has a collision-free
+            full-pose IK solution (ShelfMoveIk, at least LAYOUT_IK_RESTARTS restarts, seeded from \a rng) in the
+            planner's scene of the cans still standing, and a taken can is parked on the first free slot that is not
+            reserved. Removing a can only frees space, so taking any graspable can first loses no solution. Used by
+            sampleInitialState with graspable_layout (doc/scenario-shelf-move.md); false on any failure. */
+        bool graspableLayout(const State &s, pomdp::Rng &rng) const noexcept;
+        /// the fewest IK restarts per grasp in graspableLayout (a missed solution would reject a solvable layout)
+        static constexpr std::size_t LAYOUT_IK_RESTARTS = 24;
 
         /** \brief The scene of \a s for the SIMD checker: the calling thread's copy of the prototype for what
             \a s holds, its cans moved to \a s (noexcept; allocates only on the thread's first call). */

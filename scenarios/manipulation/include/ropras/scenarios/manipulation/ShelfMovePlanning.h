@@ -49,11 +49,17 @@ namespace ropras::scenarios
         bool solve(const ShelfMoveModel::State &particle, const ShelfTarget &target, const ompl_ext::Environment &scene,
                    double *q) noexcept;
 
-        /// the grasp orientations of the end effector (z along the approach, x up or down)
-        std::array<Eigen::Matrix3d, 2> graspOrientations() const;
+        /** \brief The grasp orientations of the end effector: z along the approach turned about the vertical by each
+            yaw of graspYaws(), x up or down (two per yaw, yaw by yaw in their order). */
+        std::vector<Eigen::Matrix3d> graspOrientations() const;
+        /// the approach's turns about the vertical (rad) that grasps and places try, in order (default:
+        /// planning.grasp_yaws)
+        const std::vector<double> &graspYaws() const noexcept { return yaws_; }
+        void setGraspYaws(std::vector<double> yaws) { yaws_ = std::move(yaws); }
 
     private:
         std::shared_ptr<const ShelfMoveModel> model_;
+        std::vector<double> yaws_;
         ompl_ext::InverseKinematics ik_;
         ompl_ext::IkWorkspace workspace_;
         ompl_ext::IkOptions options_;
@@ -88,7 +94,8 @@ namespace ropras::scenarios
 
         /** \brief The goal chain's first link: the can (not held, not parked) that stands in front of the target
             (smaller x, on its board, within planning.blocking_halfwidth sideways) nearest to the hand, whose
-            grasp is then the goal; -1 when the target's grasp is not blocked. */
+            grasp is then the goal; -1 when the target's grasp is not blocked. Conservative with turned approaches
+            (planning.grasp_yaws): one front can moved, a turned grasp of the target may pass beside the other. */
         int blockingCan(const ShelfMoveModel::State &particle) const noexcept;
         /// can \a can (not held) stands within place_tolerance of a slot other than the reserved one
         bool parked(const ShelfMoveModel::State &particle, int can) const noexcept;
