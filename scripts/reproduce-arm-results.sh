@@ -71,6 +71,7 @@ run sm-sims-ropras3-u "${SM[@]}" --solver ropras3 --heuristic uniform --sims 100
 run sm-sims-ropras3-d "${SM[@]}" --solver ropras3 --sims 100
 run sm-sims300-bplan-d "${SM[@]}" --solver bplan --sims 300
 run sm-sims300-ropras3-d "${SM[@]}" --solver ropras3 --sims 300
+run sm-sims300-ropras3-u "${SM[@]}" --solver ropras3 --heuristic uniform --sims 300
 [ "${ARM_BUDGETS:-}" = sims ] || run sm-time-bplan-d "${SM[@]}" --solver bplan --plan-time 0.89
 [ "${ARM_BUDGETS:-}" = sims ] || run sm-time-ropras3-d "${SM[@]}" --solver ropras3 --plan-time 0.89
 "$R" table ss-sims-*.jsonl
@@ -78,3 +79,10 @@ run sm-sims300-ropras3-d "${SM[@]}" --solver ropras3 --sims 300
 "$R" table rd-sims-*.jsonl
 [ "${ARM_BUDGETS:-}" = sims ] || "$R" table rd-time-*.jsonl
 "$R" table sm-*.jsonl
+# Shelf-Move's packed front (a variant: the target behind one can and two beside it; doc/results.md: ARM_SEED=6500),
+# B-plan, R-POMCP and ROP-RAS3 Dynamic at 100 simulations per call
+printf '%s\n' '{"cans": [[0.8, 0, 0.64], [0.62, 0, 0.64], [0.70, 0.08, 0.64], [0.70, -0.08, 0.64]]}' > sm-packed.json
+for solver in bplan rpomcp ropras3; do
+  run smp-$solver-d "${SM[@]}" --solver $solver --sims 100 --config sm-packed.json
+done
+"$R" table smp-*.jsonl
