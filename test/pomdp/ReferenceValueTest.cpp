@@ -119,7 +119,8 @@ TEST(ReferenceValueTest, RopRas3RootEstimateApproachesExactValue)
     const int levels = 2;
     const double exact = exactValue(*model, 0.5, levels, eta);
     const auto belief = uniformBelief(1000);
-    for (const auto backup : {RopRas3Settings::ValueBackup::RUNNING, RopRas3Settings::ValueBackup::CURRENT})
+    for (const auto backup : {RopRas3Settings::ValueBackup::RUNNING, RopRas3Settings::ValueBackup::CURRENT,
+                              RopRas3Settings::ValueBackup::FRESH})
     {
         std::vector<double> errors;
         for (const std::size_t sims : {std::size_t{1000}, std::size_t{10000}, std::size_t{200000}})

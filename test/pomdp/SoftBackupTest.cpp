@@ -252,6 +252,8 @@ TEST(SoftBackupTest, CurrentBackupForgetsStaleEstimatesRunningBackupDoesNot)
     p.set("value_backup", 1);
     EXPECT_EQ(RopRas3Settings::fromParameters(p).valueBackup, RopRas3Settings::ValueBackup::CURRENT);
     p.set("value_backup", 2);
+    EXPECT_EQ(RopRas3Settings::fromParameters(p).valueBackup, RopRas3Settings::ValueBackup::FRESH);
+    p.set("value_backup", 3);
     EXPECT_THROW(RopRas3Settings::fromParameters(p), ropras::Error);
 }
 
@@ -295,4 +297,63 @@ TEST(SoftBackupTest, CurrentBackupHoldsAtEveryNodeOfADeepTree)
     }
     EXPECT_GT(checked, 20u);
     EXPECT_GT(deep, 5u);
+}
+
+// value_backup=2 also makes Q(b, a) of the children as they stand: for a walk (reward -1, discount 0.95, never
+// terminal before depth 4) whose children are all backed-up nodes, Q(b, a) = -1 + 0.95 sum_o N(bao)/N(ba) V(bao)
+// exactly. The running mean of past returns (value_backup 0 and 1) does not satisfy it.
+TEST(SoftBackupTest, FreshBackupMakesEveryQOfTheChildrenAsTheyStand)
+{
+    auto model = std::make_shared<GambleChainModel>();
+    for (const auto backup : {RopRas3Settings::ValueBackup::FRESH, RopRas3Settings::ValueBackup::CURRENT})
+    {
+        RopRas3Settings settings;
+        settings.maxDepth = 3;
+        settings.rolloutSteps = 0;
+        settings.valueBackup = backup;
+        RopRas3Solver<GambleChainModel> solver(
+            model, std::make_unique<RandomMacroPolicy<GambleChainModel>>(model, 1, 1), settings);
+        const int particle = 0;
+        ropras::pomdp::Rng rng(13);
+        ASSERT_TRUE(solver.plan(BeliefView<int>{&particle, 1}, Budget::ofSimulations(20000), rng).valid);
+        TreeSnapshot tree;
+        ASSERT_TRUE(solver.treeSnapshot(tree));
+        std::size_t checked = 0, off = 0;
+        for (const auto &belief : tree.beliefs)
+        {
+            for (const std::uint32_t a : belief.children)
+            {
+                const auto &action = tree.actions[a];
+                if (action.children.empty() || action.visits < 2)
+                {
+                    continue;  // the gamble (terminal) or too few visits to tell
+                }
+                double sum = 0.0;
+                std::uint32_t entered = 0;
+                bool leaves = false;
+                for (const std::uint32_t c : action.children)
+                {
+                    sum += tree.beliefs[c].visits * tree.beliefs[c].value;
+                    entered += tree.beliefs[c].visits;
+                    leaves = leaves || tree.beliefs[c].depth > settings.maxDepth;
+                }
+                if (leaves || entered != action.visits)
+                {
+                    continue;  // rollouts below depth D: their samples are not in the snapshot
+                }
+                ++checked;
+                const double expected = -1.0 + 0.95 * sum / action.visits;
+                if (backup == RopRas3Settings::ValueBackup::FRESH)
+                {
+                    EXPECT_NEAR(action.q, expected, 1e-9 * 2000.0) << "visits " << action.visits;
+                }
+                off += std::abs(action.q - expected) > 1.0;
+            }
+        }
+        EXPECT_GT(checked, 20u);
+        if (backup == RopRas3Settings::ValueBackup::CURRENT)
+        {
+            EXPECT_GT(off, checked / 4) << "the running mean of returns remembers past child values";
+        }
+    }
 }

@@ -71,11 +71,15 @@ namespace ropras::pomdp
         /** \brief How V(b) is backed up: RUNNING = Algorithm 2's Backup line, a running mean of exp(eta Q) over
             the Q(b, a) of every past visit (stale estimates included, so one early lucky return keeps V near it
             for ~(1/eta) log N); CURRENT = Theorem 1 over the children's current estimates,
-            V(b) = (1/eta) log sum_a N(ba)/N(b) exp(eta Q(b, a)). The two agree while the Q(b, a) stay fixed. */
+            V(b) = (1/eta) log sum_a N(ba)/N(b) exp(eta Q(b, a)). The two agree while the Q(b, a) stay fixed.
+            FRESH = CURRENT, and Q(b, a) too is made of the children as they stand instead of a running mean of past
+            returns: Q(b, a) = (sum of the macro rewards + sum_o D(bao) V(bao)) / N(ba), D(bao) the summed
+            discounts of the visits that entered bao (a leaf child, valued by rollouts, keeps its sampled returns). */
         enum class ValueBackup
         {
             RUNNING = 0,
-            CURRENT = 1
+            CURRENT = 1,
+            FRESH = 2
         };
         ValueBackup valueBackup{ValueBackup::RUNNING};
         /** \brief Measure time spent in the model and in the reference policy (two clock reads per call). */
@@ -107,7 +111,7 @@ namespace ropras::pomdp
             s.sampleAction = p.getCount("sample_action", 0) != 0;
             s.ucbSelection = p.getCount("ucb_select", 0, 1) != 0;
             s.ucbC = p.get("ucb_c", s.ucbC);
-            const auto backup = p.getCount("value_backup", static_cast<std::size_t>(s.valueBackup), 1);
+            const auto backup = p.getCount("value_backup", static_cast<std::size_t>(s.valueBackup), 2);
             s.valueBackup = static_cast<ValueBackup>(backup);
             s.profile = p.getCount("profile", 0) != 0;
             s.maxTreeMegabytes = detail::maxTreeMegabytes(p, "ROP-RAS3");
@@ -268,6 +272,13 @@ namespace ropras::pomdp
             ParticleArena<std::uint32_t>::Segment children;
         };
 
+        /// value_backup FRESH: an action's summed macro rewards and sum over its children of D(bao) V(bao)
+        struct ActionSums
+        {
+            double reward{0.0};
+            double children{0.0};
+        };
+
         struct ActionNode
         {
             std::uint32_t macroOffset{0};
@@ -285,6 +296,8 @@ namespace ropras::pomdp
             arena_.clear();
             childArena_.clear();
             observationCounts_.clear();
+            inflow_.clear();
+            actionSums_.clear();
         }
 
         /// bytes the tree uses (sizes, not capacities: the pools keep their capacity from one plan() to the next)
@@ -292,7 +305,8 @@ namespace ropras::pomdp
         {
             return beliefs_.size() * sizeof(BeliefNode) + actions_.size() * sizeof(ActionNode) +
                    macroPool_.size() * sizeof(Action) + arena_.usedBytes() + childArena_.usedBytes() +
-                   observationCounts_.size() * sizeof(std::uint32_t);
+                   observationCounts_.size() * sizeof(std::uint32_t) + inflow_.size() * sizeof(double) +
+                   actionSums_.size() * sizeof(ActionSums);
         }
 
         bool treeFull() const noexcept
@@ -491,22 +505,67 @@ namespace ropras::pomdp
             const State &start =
                 created && settings_.independentEvaluation ? arena_.sample(beliefs_[b].particles, rng) : s;
             const auto step = detail::executeMacroCounted(*model_, start, macro, rng, settings_.profile, stats_);
+            const bool fresh = settings_.valueBackup == RopRas3Settings::ValueBackup::FRESH;
             double r = step.reward;
             if (!step.terminal)
             {
                 const std::uint32_t c = childFor(a, macroKey(step), rng);
                 arena_.add(beliefs_[c].particles, step.next, settings_.maxParticlesPerNode, rng);
-                r += step.discount * simulate(c, depth + 1, rng);
+                const double before = beliefs_[c].value;
+                const std::uint32_t visitsBefore = beliefs_[c].visits;
+                const double v = simulate(c, depth + 1, rng);
+                r += step.discount * v;
+                if (fresh)
+                {
+                    freshChild(a, c, before, visitsBefore, v, step.discount);
+                }
             }
             BeliefNode &node = beliefs_[b];
             ActionNode &action = actions_[a];
             ++node.visits;
             ++action.visits;
-            action.q += (r - action.q) / static_cast<double>(action.visits);
+            if (fresh)
+            {
+                if (actionSums_.size() < actions_.size())
+                {
+                    actionSums_.resize(actions_.size());
+                }
+                ActionSums &sums = actionSums_[a];
+                sums.reward += step.reward;
+                action.q = (sums.reward + sums.children) / static_cast<double>(action.visits);
+            }
+            else
+            {
+                action.q += (r - action.q) / static_cast<double>(action.visits);
+            }
             node.value = settings_.valueBackup == RopRas3Settings::ValueBackup::RUNNING
                              ? softValueUpdate(node.value, action.q, node.visits, settings_.eta)
                              : currentSoftValue(b);
             return node.value;
+        }
+
+        /** \brief value_backup FRESH: action \a a's sum over its children of D(bao) V(bao) after child \a c
+            returned \a v. A child that was backed up (its visits grew) moves the sum by its change of value
+            over its earlier inflow; a leaf (a rollout, no backup) adds its sampled return. */
+        void freshChild(std::uint32_t a, std::uint32_t c, double before, std::uint32_t visitsBefore, double v,
+                        double discount)
+        {
+            if (actionSums_.size() < actions_.size())
+            {
+                actionSums_.resize(actions_.size());
+            }
+            if (inflow_.size() < beliefs_.size())
+            {
+                inflow_.resize(beliefs_.size(), 0.0);
+            }
+            ActionSums &sums = actionSums_[a];
+            if (beliefs_[c].visits == visitsBefore)
+            {
+                sums.children += discount * v;
+                return;
+            }
+            sums.children += inflow_[c] * (beliefs_[c].value - before) + discount * beliefs_[c].value;
+            inflow_[c] += discount;
         }
 
         /** \brief Theorem 1 over the current children, (1/eta) log sum_a N(ba)/N(b) exp(eta Q(b, a)) (softValueOf;
@@ -586,6 +645,9 @@ namespace ropras::pomdp
         std::vector<double> widenTable_;
         /// M(bao) per belief node (observation widening only)
         std::vector<std::uint32_t> observationCounts_;
+        /// value_backup FRESH only: D(bao) per belief node (summed discounts of its backed-up entries), sums per action
+        std::vector<double> inflow_;
+        std::vector<ActionSums> actionSums_;
     };
 }  // namespace ropras::pomdp
 
