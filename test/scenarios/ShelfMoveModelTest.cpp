@@ -704,6 +704,13 @@ namespace ropras::scenarios
             EXPECT_NEAR(r.col(2).z(), 0.0, 1e-12);
         }
         EXPECT_NEAR(ik.graspYaws()[3], 30.0 * PI / 180.0, 1e-12);
+        ShelfMoveIk other(turned, 4, 1);
+        EXPECT_THROW(other.setGraspYaws({}), Error);
+        EXPECT_THROW(other.setGraspYaws({0.0, std::nan("")}), Error);
+        other.setGraspYaws({0.25});
+        ASSERT_EQ(other.graspOrientations().size(), 2u);
+        EXPECT_NEAR(std::atan2(other.graspOrientations()[0].col(2).y(), other.graspOrientations()[0].col(2).x()), 0.25,
+                    1e-12);
         // the packed front squeezed: no straight grasp of cans 1 and 2; turned ones exist, and the model's own grasp
         // rule (graspableCan) accepts the IK's configuration
         State s = turned->trueInitialState();

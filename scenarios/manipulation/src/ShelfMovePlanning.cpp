@@ -70,6 +70,15 @@ namespace ropras::scenarios
         return out;
     }
 
+    void ShelfMoveIk::setGraspYaws(std::vector<double> yaws)
+    {
+        if (yaws.empty() || !std::all_of(yaws.begin(), yaws.end(), [](double y) { return std::isfinite(y); }))
+        {
+            throw Error("ShelfMoveIk: grasp yaws must be a non-empty list of finite angles (rad)");
+        }
+        yaws_ = std::move(yaws);
+    }
+
     bool ShelfMoveIk::solve(const ShelfMoveModel::State &particle, const ShelfTarget &target,
                             const ompl_ext::Environment &scene, double *q) noexcept
     {

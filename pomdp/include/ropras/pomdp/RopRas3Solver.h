@@ -150,7 +150,8 @@ namespace ropras::pomdp
         generative model, bin the macro observation (MacroStepResult::observationKey), add s' to the child's
         particles, recurse, and Backup: N(b)++, N(ba)++, Q(ba) += (r - Q)/N(ba) with
         r = macro reward + gamma^len V(child), and the soft value update softValueUpdate() (value_backup 0)
-        or currentSoftValue() over the children (value_backup 1). The executed
+        or currentSoftValue() over the children (value_backup 1; value_backup 2 also makes Q(ba) of the children's
+        current values, freshChild()). The executed
         action is read off the root with pi*(a|b) ~ pibar(a|b) exp(eta Q(b,a)): children were drawn from
         pibar, so this is argmax Q (default) or a softmax sample over the children.
 

@@ -72,7 +72,7 @@ namespace ropras::scenarios
                                          ///< lateral distance blocks its grasp (the hand's half-width + a can radius)
         double placeLift{0.005};         ///< "planning.place_lift": release this far above the slot centre
         /// "planning.grasp_yaws": the approach's turns about the vertical that grasp and place IK try (degrees)
-        std::vector<double> graspYaws{0.0};
+        std::vector<double> graspYaws{0.0, 15.0, -15.0, 30.0, -30.0};
         // "world": what really happens (ShelfMoveWorld, Bullet rigid-body dynamics) or the model as its own world
         bool bulletWorld{true};           ///< "world.type": "bullet" (default) or "model"
         double canMass{0.2};              ///< "world.can_mass" (kg)

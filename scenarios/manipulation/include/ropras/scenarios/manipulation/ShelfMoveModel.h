@@ -146,7 +146,9 @@ namespace ropras::scenarios
             target is grasped: repeatedly, the target's grasp, else the first other can's grasp, has a collision-free
             full-pose IK solution (ShelfMoveIk, at least LAYOUT_IK_RESTARTS restarts, seeded from \a rng) in the
             planner's scene of the cans still standing, and a taken can is parked on the first free slot that is not
-            reserved. Removing a can only frees space, so taking any graspable can first loses no solution. Used by
+            reserved. Conservative: a parked can that stood in the way of a later grasp, or slots running out, would
+            reject a layout that another order solves (with the default slots, away from the lower board's middle,
+            and 4 free slots for 3 cans, taking any graspable can first loses nothing). Used by
             sampleInitialState with graspable_layout (doc/scenario-shelf-move.md); false on any failure. */
         bool graspableLayout(const State &s, pomdp::Rng &rng) const noexcept;
         /// the fewest IK restarts per grasp in graspableLayout (a missed solution would reject a solvable layout)

@@ -55,7 +55,8 @@ namespace ropras::scenarios
         /// the approach's turns about the vertical (rad) that grasps and places try, in order (default:
         /// planning.grasp_yaws)
         const std::vector<double> &graspYaws() const noexcept { return yaws_; }
-        void setGraspYaws(std::vector<double> yaws) { yaws_ = std::move(yaws); }
+        /// throws ropras::Error for an empty list or a non-finite angle (radians, unlike the degrees of the key)
+        void setGraspYaws(std::vector<double> yaws);
 
     private:
         std::shared_ptr<const ShelfMoveModel> model_;
