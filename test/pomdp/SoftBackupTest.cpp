@@ -203,6 +203,19 @@ namespace
         std::size_t numActions() const noexcept { return actions; }
         Action action(std::size_t i) const noexcept { return static_cast<Action>(i); }
     };
+
+    /// ROP-RAS3 over the gamble chain: macros of one random primitive, leaves worth 0 below depth \a maxDepth
+    std::unique_ptr<RopRas3Solver<GambleChainModel>> gambleSolver(const std::shared_ptr<GambleChainModel> &model,
+                                                                  unsigned maxDepth,
+                                                                  RopRas3Settings::ValueBackup backup)
+    {
+        RopRas3Settings settings;
+        settings.maxDepth = maxDepth;
+        settings.rolloutSteps = 0;
+        settings.valueBackup = backup;
+        return std::make_unique<RopRas3Solver<GambleChainModel>>(
+            model, std::make_unique<RandomMacroPolicy<GambleChainModel>>(model, 1, 1), settings);
+    }
 }  // namespace
 
 // With noisy returns, Algorithm 2's running backup keeps every early Q estimate in its mean of exp(eta Q): one
@@ -214,17 +227,12 @@ TEST(SoftBackupTest, CurrentBackupForgetsStaleEstimatesRunningBackupDoesNot)
     model->actions = 1;  // the gamble alone: every child of the root is the same gamble
     const auto rootValue = [&](RopRas3Settings::ValueBackup backup, std::vector<std::pair<double, std::uint32_t>> &kids)
     {
-        RopRas3Settings settings;
-        settings.maxDepth = 0;
-        settings.rolloutSteps = 0;
-        settings.valueBackup = backup;
-        RopRas3Solver<GambleChainModel> solver(
-            model, std::make_unique<RandomMacroPolicy<GambleChainModel>>(model, 1, 1), settings);
+        const auto solver = gambleSolver(model, 0, backup);
         const int particle = 0;
         ropras::pomdp::Rng rng(5);
-        const auto result = solver.plan(BeliefView<int>{&particle, 1}, Budget::ofSimulations(4000), rng);
+        const auto result = solver->plan(BeliefView<int>{&particle, 1}, Budget::ofSimulations(4000), rng);
         EXPECT_TRUE(result.valid);
-        kids = solver.rootChildren();
+        kids = solver->rootChildren();
         return result.statistics.rootValue;
     };
     std::vector<std::pair<double, std::uint32_t>> running, current;
@@ -262,18 +270,13 @@ TEST(SoftBackupTest, CurrentBackupForgetsStaleEstimatesRunningBackupDoesNot)
 TEST(SoftBackupTest, CurrentBackupHoldsAtEveryNodeOfADeepTree)
 {
     auto model = std::make_shared<GambleChainModel>();
-    RopRas3Settings settings;
-    settings.maxDepth = 3;
-    settings.rolloutSteps = 0;
-    settings.valueBackup = RopRas3Settings::ValueBackup::CURRENT;
-    RopRas3Solver<GambleChainModel> solver(model, std::make_unique<RandomMacroPolicy<GambleChainModel>>(model, 1, 1),
-                                           settings);
+    const auto solver = gambleSolver(model, 3, RopRas3Settings::ValueBackup::CURRENT);
     const int particle = 0;
     ropras::pomdp::Rng rng(11);
-    const auto result = solver.plan(BeliefView<int>{&particle, 1}, Budget::ofSimulations(20000), rng);
+    const auto result = solver->plan(BeliefView<int>{&particle, 1}, Budget::ofSimulations(20000), rng);
     ASSERT_TRUE(result.valid);
     TreeSnapshot tree;
-    ASSERT_TRUE(solver.treeSnapshot(tree));
+    ASSERT_TRUE(solver->treeSnapshot(tree));
     std::size_t checked = 0, deep = 0;
     for (const auto &belief : tree.beliefs)
     {
@@ -292,7 +295,7 @@ TEST(SoftBackupTest, CurrentBackupHoldsAtEveryNodeOfADeepTree)
         }
         ++checked;
         deep += belief.depth >= 2 ? 1 : 0;
-        EXPECT_NEAR(belief.value, softValue(q.data(), w.data(), q.size(), settings.eta), 1e-9 * 2000.0)
+        EXPECT_NEAR(belief.value, softValue(q.data(), w.data(), q.size(), solver->settings().eta), 1e-9 * 2000.0)
             << "belief at depth " << belief.depth << " with " << belief.visits << " visits";
     }
     EXPECT_GT(checked, 20u);
@@ -307,17 +310,12 @@ TEST(SoftBackupTest, FreshBackupMakesEveryQOfTheChildrenAsTheyStand)
     auto model = std::make_shared<GambleChainModel>();
     for (const auto backup : {RopRas3Settings::ValueBackup::FRESH, RopRas3Settings::ValueBackup::CURRENT})
     {
-        RopRas3Settings settings;
-        settings.maxDepth = 3;
-        settings.rolloutSteps = 0;
-        settings.valueBackup = backup;
-        RopRas3Solver<GambleChainModel> solver(
-            model, std::make_unique<RandomMacroPolicy<GambleChainModel>>(model, 1, 1), settings);
+        const auto solver = gambleSolver(model, 3, backup);
         const int particle = 0;
         ropras::pomdp::Rng rng(13);
-        ASSERT_TRUE(solver.plan(BeliefView<int>{&particle, 1}, Budget::ofSimulations(20000), rng).valid);
+        ASSERT_TRUE(solver->plan(BeliefView<int>{&particle, 1}, Budget::ofSimulations(20000), rng).valid);
         TreeSnapshot tree;
-        ASSERT_TRUE(solver.treeSnapshot(tree));
+        ASSERT_TRUE(solver->treeSnapshot(tree));
         std::size_t checked = 0, off = 0;
         for (const auto &belief : tree.beliefs)
         {
@@ -335,7 +333,7 @@ TEST(SoftBackupTest, FreshBackupMakesEveryQOfTheChildrenAsTheyStand)
                 {
                     sum += tree.beliefs[c].visits * tree.beliefs[c].value;
                     entered += tree.beliefs[c].visits;
-                    leaves = leaves || tree.beliefs[c].depth > settings.maxDepth;
+                    leaves = leaves || tree.beliefs[c].depth > solver->settings().maxDepth;
                 }
                 if (leaves || entered != action.visits)
                 {

@@ -21,11 +21,7 @@ namespace ropras::scenarios
                 {
                     continue;
                 }
-                ShelfMoveModel::State parked = s;
-                for (std::size_t a = 0; a < 3; ++a)
-                {
-                    parked.can[k][a] = config.slots[i][a];
-                }
+                const ShelfMoveModel::State parked = model.placedOnSlot(s, k, i);
                 if (model.canPlacementValid(parked, k))
                 {
                     s = parked;
@@ -62,12 +58,8 @@ namespace ropras::scenarios
                     {
                         continue;
                     }
-                    ShelfTarget grasp;
-                    grasp.kind = ShelfTarget::Kind::Grasp;
-                    grasp.can = static_cast<int>(k);
-                    grasp.point = {{layout.can[k][0], layout.can[k][1], layout.can[k][2]}};
                     double q[ARM_DOF];
-                    if (!ik.solve(layout, grasp, *scene, q))
+                    if (!ik.solve(layout, ShelfMoveTargetSpace::grasp(layout, static_cast<int>(k)), *scene, q))
                     {
                         continue;
                     }

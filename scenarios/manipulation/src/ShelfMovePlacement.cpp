@@ -137,6 +137,20 @@ namespace ropras::scenarios
         return best;
     }
 
+    ShelfMoveModel::State ShelfMoveModel::placedOnSlot(const State &s, std::size_t k, std::size_t slot) const noexcept
+    {
+        State placed = s;
+        for (std::size_t a = 0; a < 3; ++a)
+        {
+            placed.can[k][a] = config_.slots[slot][a];
+        }
+        if (placed.held == static_cast<int>(k))
+        {
+            placed.held = -1;
+        }
+        return placed;
+    }
+
     int ShelfMoveModel::releaseSlot(const State &s) const noexcept
     {
         if (s.held < 0 || s.held >= static_cast<int>(SHELF_CANS))
@@ -154,12 +168,7 @@ namespace ropras::scenarios
             {
                 continue;
             }
-            State placed = s;
-            for (int a = 0; a < 3; ++a)
-            {
-                placed.can[s.held][a] = slot[static_cast<std::size_t>(a)];
-            }
-            placed.held = -1;
+            const State placed = placedOnSlot(s, static_cast<std::size_t>(s.held), i);
             if (canPlacementValid(placed, static_cast<std::size_t>(s.held)) &&
                 arm_->checker()->isValid(scene(placed), placed.q))
             {

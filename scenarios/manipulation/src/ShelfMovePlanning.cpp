@@ -137,7 +137,7 @@ namespace ropras::scenarios
         }
     }
 
-    ShelfTarget ShelfMoveTargetSpace::grasp(const ShelfMoveModel::State &particle, int can) const
+    ShelfTarget ShelfMoveTargetSpace::grasp(const ShelfMoveModel::State &particle, int can)
     {
         ShelfTarget t;
         t.kind = ShelfTarget::Kind::Grasp;
@@ -146,7 +146,7 @@ namespace ropras::scenarios
         return t;
     }
 
-    ShelfTarget ShelfMoveTargetSpace::sense(const ShelfMoveModel::State &particle, int can) const
+    ShelfTarget ShelfMoveTargetSpace::sense(const ShelfMoveModel::State &particle, int can)
     {
         ShelfTarget t = grasp(particle, can);
         t.kind = ShelfTarget::Kind::Sense;
@@ -188,12 +188,7 @@ namespace ropras::scenarios
         for (std::size_t i = 0; i + 1 < c.slots.size(); ++i)
         {
             const std::size_t slot = otherSlot(i);
-            ShelfMoveModel::State placed = particle;
-            for (int a = 0; a < 3; ++a)
-            {
-                placed.can[particle.held][a] = c.slots[slot][static_cast<std::size_t>(a)];
-            }
-            placed.held = -1;
+            const auto placed = model_->placedOnSlot(particle, static_cast<std::size_t>(particle.held), slot);
             const double d = (ee - Eigen::Vector3d(c.slots[slot][0], c.slots[slot][1], c.slots[slot][2])).norm();
             if (model_->canPlacementValid(placed, static_cast<std::size_t>(particle.held)) && d < bestDistance)
             {

@@ -140,6 +140,8 @@ namespace ropras::scenarios
         /// whether can \a k of \a s may stand where it is: on a board, clear of the shelf's other boxes and
         /// of every other can not held (2 can_radius apart)
         bool canPlacementValid(const State &s, std::size_t k) const noexcept;
+        /// \a s with can \a k standing on slot \a slot (its centre), not held
+        State placedOnSlot(const State &s, std::size_t k, std::size_t slot) const noexcept;
         /// every can not held placed validly and the arm (with what it holds) collision-free
         bool validState(const State &s) const noexcept;
         /** \brief Whether the cans of \a s (nothing held) can be taken off the shelf one after another until the

@@ -89,8 +89,10 @@ namespace ropras::scenarios
         std::uint64_t entropyBin(const ShelfMoveModel::State &particle) const override;
         std::size_t numEntropyBins() const override { return 0; }
 
-        ShelfTarget grasp(const ShelfMoveModel::State &particle, int can) const;
-        ShelfTarget sense(const ShelfMoveModel::State &particle, int can) const;
+        /// grasp / sense can \a can where \a particle has it (no model needed: also for
+        /// ShelfMoveModel::graspableLayout)
+        static ShelfTarget grasp(const ShelfMoveModel::State &particle, int can);
+        static ShelfTarget sense(const ShelfMoveModel::State &particle, int can);
         ShelfTarget place(int slot) const;
 
         /** \brief The goal chain's first link: the can (not held, not parked) that stands in front of the target
