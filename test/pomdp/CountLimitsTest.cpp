@@ -3,6 +3,7 @@
 // --planning-particles 1000000000000).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 
@@ -42,4 +43,24 @@ TEST(CountLimits, ParticleCountsAskForTheirMemoryFirst)
     ropras::test::expectErrorMentions([&] { small->runEpisode(episode, 1); },
                                       {"planning particles (--planning-particles) 1000000000000", "asks for"});
     ropras::setMemoryLimit(saved);
+}
+
+TEST(CountLimits, FillParticlesAreBounded)
+{
+    // each filled particle costs a macro execution per new node: a count past 100 000 is refused by name, a
+    // fraction or NaN is no count
+    for (const double bad : {100001.0, 2.5, -1.0, std::nan("")})
+    {
+        ropras::test::expectErrorMentions(
+            [&]
+            {
+                ParameterMap params;
+                params.set("fill_particles", bad);  // NaN is refused here already
+                modelRegistry().create("tiger", "ropras3", params);
+            },
+            {"fill_particles"});
+    }
+    ParameterMap ok;
+    ok.set("fill_particles", 100000.0);
+    EXPECT_NO_THROW(modelRegistry().create("tiger", "ropras3", ok));
 }

@@ -67,6 +67,39 @@ namespace ropras::pomdp::test
             Action action(std::size_t i) const noexcept { return static_cast<Action>(i); }
         };
 
+        /** \brief Wait, then guess the side: s = side + 2 t. At t = 0 action 2 waits (reward 0; its observation is
+            the side + 1 when \a reveal, else empty); at t = 1 action a in {0, 1} pays 1 when a == side and ends. */
+        template <bool Reveal>
+        struct WaitGuessModel
+        {
+            using State = int;
+            using Action = int;
+            using Observation = int;
+            StepResult<State, Observation> step(State s, Action a, Rng &) const noexcept
+            {
+                if (s < 2)
+                    return {s + 2, Reveal ? s + 1 : 0, 0.0, false};
+                return {s, 0, a == s % 2 ? 1.0 : 0.0, true};
+            }
+            double observationProbability(Observation, State, Action) const noexcept { return 1.0; }
+            State sampleInitialState(Rng &rng) const noexcept { return static_cast<int>(rng.uniformIndex(2)); }
+            double discount() const noexcept { return 0.9; }
+            std::size_t numActions() const noexcept { return 3; }
+            Action action(std::size_t i) const noexcept { return static_cast<Action>(i); }
+        };
+
+        /** \brief Wait at t = 0, then guess the side of the particle the macro is planned from. */
+        template <class M>
+        struct WaitThenGuessPolicy final : ReferencePolicy<M>
+        {
+            bool sample(const int &start, BeliefView<int>, Rng &, std::vector<int> &out) override
+            {
+                out.push_back(start < 2 ? 2 : start % 2);
+                return true;
+            }
+            std::string name() const override { return "wait-then-guess"; }
+        };
+
         /** \brief The one-step macro {start} (guess the side of the particle it is planned from) / {0}. */
         template <class M>
         struct EchoStartPolicy final : ReferencePolicy<M>
@@ -186,6 +219,66 @@ namespace ropras::pomdp::test
                 EXPECT_NEAR(result.statistics.rootValue, v, 4.0 * se * std::exp(1.0) / (1.0 + std::exp(1.0)) * 2.0);
             }
         }
+    }
+
+    TEST(BeliefFill, DeepNodesHoldTheBeliefNotTheOneParticleThatArrived)
+    {
+        // Every simulation creates a new wait macro at the root (beta_a huge, alpha_a 0), so each depth-1 node is
+        // new and gets one guess, evaluated on a particle drawn from the node other than the one it was planned
+        // from (independent_eval). Without the fill that node holds the single particle that arrived: the guess
+        // is always right, the search believes the side known. With the fill it holds the root's belief moved
+        // through the wait: half the guesses are wrong. When the wait reveals the side, the fill keeps only the
+        // particles of the observed side, and every guess is right again.
+        RopRas3Settings s;
+        s.betaA = 1e9;
+        s.alphaA = 0.0;
+        s.maxDepth = 1;
+        s.rolloutSteps = 0;
+        s.independentEvaluation = true;
+        std::vector<int> particles;
+        for (int i = 0; i < 200; ++i)
+            particles.push_back(i % 2);
+        const BeliefView<int> belief{particles.data(), particles.size()};
+        const std::size_t n = 2000;
+        const auto run = [&](auto model, unsigned fill, double &meanQ, TreeSnapshot &tree)
+        {
+            using M = decltype(model);
+            s.fillParticles = fill;
+            RopRas3Solver<M> solver(std::make_shared<const M>(), std::make_unique<WaitThenGuessPolicy<M>>(), s);
+            Rng rng(5);
+            const auto result = solver.plan(belief, Budget::ofSimulations(n), rng);
+            ASSERT_TRUE(solver.treeSnapshot(tree));
+            const auto children = solver.rootChildren();
+            ASSERT_EQ(children.size(), n);
+            meanQ = 0.0;
+            for (const auto &qn : children)
+                meanQ += qn.first / static_cast<double>(n);
+            EXPECT_EQ(result.statistics.fillTried, static_cast<std::size_t>(fill) * n) << "fill " << fill;
+        };
+        const double se = 0.9 * std::sqrt(0.25 / static_cast<double>(n));
+        double q = 0.0;
+        TreeSnapshot tree;
+        run(WaitGuessModel<false>{}, 0, q, tree);
+        EXPECT_NEAR(q, 0.9, 1e-9) << "one particle per node: the guess is planned and valued on it";
+        for (std::size_t i = 1; i < tree.beliefs.size(); ++i)
+            if (tree.beliefs[i].depth == 1)
+                EXPECT_EQ(tree.beliefs[i].particles, 1u);
+        run(WaitGuessModel<false>{}, 30, q, tree);
+        EXPECT_NEAR(q, 0.45, 4.0 * se) << "the node holds both sides: half the guesses miss";
+        for (std::size_t i = 1; i < tree.beliefs.size(); ++i)
+            if (tree.beliefs[i].depth == 1)
+                EXPECT_EQ(tree.beliefs[i].particles, 31u) << "a wait never ends and never tells: all 30 kept";
+        run(WaitGuessModel<true>{}, 30, q, tree);
+        EXPECT_NEAR(q, 0.9, 1e-9) << "the fill keeps only the particles of the observed side";
+        std::uint32_t kept = 0, nodes = 0;
+        for (std::size_t i = 1; i < tree.beliefs.size(); ++i)
+            if (tree.beliefs[i].depth == 1)
+            {
+                kept += tree.beliefs[i].particles - 1;
+                ++nodes;
+            }
+        ASSERT_EQ(nodes, n);
+        EXPECT_NEAR(static_cast<double>(kept) / (30.0 * n), 0.5, 0.02) << "about half the drawn particles match";
     }
 
     TEST(TreeSnapshot, CountsAgreeWithTheSearch)

@@ -169,6 +169,11 @@ namespace ropras::scenarios
                                   ? static_cast<double>(s.referenceFailed) / static_cast<double>(s.referenceRequested)
                                   : 0.0;
         out["max_depth"] = s.maxDepth;
+        if (s.fillTried > 0)
+        {
+            out["fill_tried"] = s.fillTried;
+            out["fill_kept"] = s.fillKept;
+        }
         out["memory_capped_plans"] = s.memoryCapped;
         out["tree_mb_max"] = static_cast<double>(s.treeBytes) / 1048576.0;
         out["wall_time_s"] = wallSeconds;

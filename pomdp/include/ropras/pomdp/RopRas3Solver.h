@@ -392,7 +392,12 @@ namespace ropras::pomdp
             if (!step.terminal)
             {
                 const std::uint32_t c = childFor(a, macroKey(step), rng);
+                const bool createdChild = beliefs_[c].particles.size == 0;
                 arena_.add(beliefs_[c].particles, step.next, settings_.maxParticlesPerNode, rng);
+                if (createdChild && settings_.fillParticles > 0)
+                {
+                    fillBelief(b, a, c, rng);
+                }
                 const double before = beliefs_[c].value;
                 const std::uint32_t visitsBefore = beliefs_[c].visits;
                 const double v = simulate(c, depth + 1, rng);
@@ -420,6 +425,25 @@ namespace ropras::pomdp
                              ? softValueUpdate(node.value, action.q, node.visits, settings_.eta)
                              : currentSoftValue(b);
             return node.value;
+        }
+
+        /** \brief Belief fill (RopRas3Settings::fillParticles) of the new node \a c = b a o: particles of \a b
+            moved through \a a, kept when they end it alive with c's observation key. */
+        void fillBelief(std::uint32_t b, std::uint32_t a, std::uint32_t c, Rng &rng) noexcept
+        {
+            const auto macro = detail::macroOf(macroPool_, actions_[a]);
+            const std::uint64_t key = beliefs_[c].key;
+            for (unsigned k = 0; k < settings_.fillParticles; ++k)
+            {
+                const State p = arena_.sample(beliefs_[b].particles, rng);
+                const auto step = detail::executeMacroCounted(*model_, p, macro, rng, settings_.profile, stats_);
+                ++stats_.fillTried;
+                if (!step.terminal && macroKey(step) == key)
+                {
+                    arena_.add(beliefs_[c].particles, step.next, settings_.maxParticlesPerNode, rng);
+                    ++stats_.fillKept;
+                }
+            }
         }
 
         /** \brief value_backup FRESH: action \a a's sum over its children of D(bao) V(bao) after child \a c

@@ -19,6 +19,9 @@ namespace ropras::pomdp
         std::size_t referenceRequested{0};
         std::size_t referenceFailed{0};
         std::size_t modelSteps{0};
+        /** \brief ROP-RAS3's belief fill (fill_particles): particles moved into new nodes, and those kept. */
+        std::size_t fillTried{0};
+        std::size_t fillKept{0};
         double seconds{0.0};
         double referenceSeconds{0.0};
         double modelSeconds{0.0};
@@ -40,6 +43,8 @@ namespace ropras::pomdp
             referenceRequested += other.referenceRequested;
             referenceFailed += other.referenceFailed;
             modelSteps += other.modelSteps;
+            fillTried += other.fillTried;
+            fillKept += other.fillKept;
             memoryCapped += other.memoryCapped;
             treeBytes = treeBytes > other.treeBytes ? treeBytes : other.treeBytes;
             seconds += other.seconds;
