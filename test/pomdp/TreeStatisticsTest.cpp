@@ -279,6 +279,13 @@ namespace ropras::pomdp::test
             }
         ASSERT_EQ(nodes, n);
         EXPECT_NEAR(static_cast<double>(kept) / (30.0 * n), 0.5, 0.02) << "about half the drawn particles match";
+        // with D = 0 the depth-1 nodes are leaves (a rollout from one particle): none is filled
+        s.maxDepth = 0;
+        s.fillParticles = 30;
+        RopRas3Solver<WaitGuessModel<false>> leaves(std::make_shared<const WaitGuessModel<false>>(),
+                                                    std::make_unique<WaitThenGuessPolicy<WaitGuessModel<false>>>(), s);
+        Rng rng(5);
+        EXPECT_EQ(leaves.plan(belief, Budget::ofSimulations(100), rng).statistics.fillTried, 0u);
     }
 
     TEST(TreeSnapshot, CountsAgreeWithTheSearch)

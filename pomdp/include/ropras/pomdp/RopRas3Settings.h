@@ -29,11 +29,11 @@ namespace ropras::pomdp
         bool heuristicLeaf{true};
         /** \brief Cap on the particles kept per belief node (uniform subsample); 0 = keep all (the paper). */
         unsigned maxParticlesPerNode{0};
-        /** \brief Belief fill: a belief node bao created by a simulation also gets up to fillParticles particles
-            drawn from b, moved through a by the model and kept when they end the macro alive with the node's
-            observation key. 0 = off (Algorithm 2: a node holds only the particles that simulations brought, so a
-            node deep in the tree holds one or two, and every macro planned there is planned for the very state it
-            is then valued on). */
+        /** \brief Belief fill: a belief node bao created by a simulation within depth D (a leaf below D is not
+            filled) also gets up to fillParticles particles drawn from b, moved through a by the model and kept when
+            they end the macro alive with the node's observation key. 0 = off (Algorithm 2: a node holds only the
+           particles that simulations brought, so a node deep in the tree holds one or two, and every macro planned
+           there is planned for the very state it is then valued on). */
         unsigned fillParticles{0};
         /** \brief Observation progressive widening (Algorithm 2, lines 6-10) over the binned macro observations:
             a macro observation whose key has no child yet gets a new child iff |C(ba)| <= betaO N(ba)^alphaO,

@@ -394,7 +394,8 @@ namespace ropras::pomdp
                 const std::uint32_t c = childFor(a, macroKey(step), rng);
                 const bool createdChild = beliefs_[c].particles.size == 0;
                 arena_.add(beliefs_[c].particles, step.next, settings_.maxParticlesPerNode, rng);
-                if (createdChild && settings_.fillParticles > 0)
+                // a leaf below depth D (valued by a rollout from one particle) has no use for a belief
+                if (createdChild && settings_.fillParticles > 0 && depth < settings_.maxDepth)
                 {
                     fillBelief(b, a, c, rng);
                 }
