@@ -1,6 +1,7 @@
 // ROP-RAS3's observation handling and first evaluations (issue 14): macro observation keys (whole sequence vs the
 // last non-empty observation), observation progressive widening bounding the branching, the bias of evaluating a
-// new macro on the particle it was planned from (closed form), and the tree snapshot's counts.
+// new macro on the particle it was planned from (closed form), the belief fill of new nodes (closed form), and the
+// tree snapshot's counts.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -224,11 +225,11 @@ namespace ropras::pomdp::test
     TEST(BeliefFill, DeepNodesHoldTheBeliefNotTheOneParticleThatArrived)
     {
         // Every simulation creates a new wait macro at the root (beta_a huge, alpha_a 0), so each depth-1 node is
-        // new and gets one guess, evaluated on a particle drawn from the node other than the one it was planned
-        // from (independent_eval). Without the fill that node holds the single particle that arrived: the guess
-        // is always right, the search believes the side known. With the fill it holds the root's belief moved
-        // through the wait: half the guesses are wrong. When the wait reveals the side, the fill keeps only the
-        // particles of the observed side, and every guess is right again.
+        // new and gets one guess, evaluated on a particle drawn from the node independently of the one it was
+        // planned from (independent_eval). Without the fill that node holds the single particle that arrived: the
+        // guess is always right, the search believes the side known. With the fill it holds the root's belief
+        // moved through the wait: about half the guesses are wrong. When the wait reveals the side, the fill keeps only
+        // the particles of the observed side, and every guess is right again.
         RopRas3Settings s;
         s.betaA = 1e9;
         s.alphaA = 0.0;
@@ -264,7 +265,9 @@ namespace ropras::pomdp::test
             if (tree.beliefs[i].depth == 1)
                 EXPECT_EQ(tree.beliefs[i].particles, 1u);
         run(WaitGuessModel<false>{}, 30, q, tree);
-        EXPECT_NEAR(q, 0.45, 4.0 * se) << "the node holds both sides: half the guesses miss";
+        // planned from one of the node's 31 particles, valued on an independent draw from them: right w.p.
+        // E[p^2 + (1 - p)^2] with 31 p ~ Binomial(31, 1/2) arrivals and fills, i.e. 16/31
+        EXPECT_NEAR(q, 0.9 * 16.0 / 31.0, 4.0 * se) << "the node holds both sides: half the guesses miss";
         for (std::size_t i = 1; i < tree.beliefs.size(); ++i)
             if (tree.beliefs[i].depth == 1)
                 EXPECT_EQ(tree.beliefs[i].particles, 31u) << "a wait never ends and never tells: all 30 kept";
@@ -279,6 +282,12 @@ namespace ropras::pomdp::test
             }
         ASSERT_EQ(nodes, n);
         EXPECT_NEAR(static_cast<double>(kept) / (30.0 * n), 0.5, 0.02) << "about half the drawn particles match";
+        // Algorithm 2's first evaluation (independent_eval 0) values a new macro on the particle it was planned
+        // from, filled node or not: the fill changes what later visits and the reference policy draw, not that
+        s.independentEvaluation = false;
+        run(WaitGuessModel<false>{}, 30, q, tree);
+        EXPECT_NEAR(q, 0.9, 1e-9);
+        s.independentEvaluation = true;
         // with D = 0 the depth-1 nodes are leaves (a rollout from one particle): none is filled
         s.maxDepth = 0;
         s.fillParticles = 30;

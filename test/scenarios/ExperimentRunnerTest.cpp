@@ -248,6 +248,7 @@ namespace ropras::scenarios::test
         EXPECT_GT(requested, 0.0) << "ropras3 asks its reference policy";
         EXPECT_DOUBLE_EQ(r["ref_failures"].get<double>(), r["ref_failed"].get<double>() / requested);
         EXPECT_LE(r["steps"].get<std::size_t>(), 20u);
+        EXPECT_FALSE(r.contains("fill_tried")) << "the belief fill is off by default: no fill keys";
         // the toy pays -1 per step and +100 at the goal (terminal): within 20 steps a success returns > 0, a
         // failure <= 0
         for (const auto &rec : records)
