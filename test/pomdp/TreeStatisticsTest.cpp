@@ -254,7 +254,9 @@ namespace ropras::pomdp::test
             meanQ = 0.0;
             for (const auto &qn : children)
                 meanQ += qn.first / static_cast<double>(n);
-            EXPECT_EQ(result.statistics.fillTried, static_cast<std::size_t>(fill) * n) << "fill " << fill;
+            // every simulation creates one depth-1 node, filled only when it is expanded (D >= 1)
+            EXPECT_EQ(result.statistics.fillTried, s.maxDepth > 0 ? static_cast<std::size_t>(fill) * n : 0u)
+                << "fill " << fill << ", D " << s.maxDepth;
         };
         const double se = 0.9 * std::sqrt(0.25 / static_cast<double>(n));
         double q = 0.0;
@@ -290,11 +292,7 @@ namespace ropras::pomdp::test
         s.independentEvaluation = true;
         // with D = 0 the depth-1 nodes are leaves (a rollout from one particle): none is filled
         s.maxDepth = 0;
-        s.fillParticles = 30;
-        RopRas3Solver<WaitGuessModel<false>> leaves(std::make_shared<const WaitGuessModel<false>>(),
-                                                    std::make_unique<WaitThenGuessPolicy<WaitGuessModel<false>>>(), s);
-        Rng rng(5);
-        EXPECT_EQ(leaves.plan(belief, Budget::ofSimulations(100), rng).statistics.fillTried, 0u);
+        run(WaitGuessModel<false>{}, 30, q, tree);
     }
 
     TEST(TreeSnapshot, CountsAgreeWithTheSearch)

@@ -39,6 +39,13 @@ namespace ropras::pomdp
             \a max (MAX_UNSIGNED for settings stored as `unsigned`, so that none is silently truncated). */
         std::size_t getCount(const std::string &name, std::size_t fallback, double max = MAX_COUNT) const;
 
+        /** \brief getCount() for a setting stored as `unsigned` (\a max at most MAX_UNSIGNED, so that nothing is
+            truncated). */
+        unsigned getUnsigned(const std::string &name, unsigned fallback, double max = MAX_UNSIGNED) const
+        {
+            return static_cast<unsigned>(getCount(name, fallback, max < MAX_UNSIGNED ? max : MAX_UNSIGNED));
+        }
+
         /** \brief Throws ropras::Error naming every parameter that no get() read and listing the valid names
             (those read, and \a exempt) (\a context names the reader, e.g. "solver ropras3 on model tiger");
             names in \a exempt are not checked. */

@@ -42,11 +42,9 @@ namespace ropras::pomdp
         {
             PomcpSettings s;
             s.explorationConstant = p.get("ucb_c", s.explorationConstant);
-            s.maxDepth = static_cast<unsigned>(p.getCount("depth", s.maxDepth, ParameterMap::MAX_UNSIGNED));
-            s.rolloutSteps =
-                static_cast<unsigned>(p.getCount("rollout_steps", s.rolloutSteps, ParameterMap::MAX_UNSIGNED));
-            s.macroActionsPerNode =
-                static_cast<unsigned>(p.getCount("macro_actions", s.macroActionsPerNode, ParameterMap::MAX_UNSIGNED));
+            s.maxDepth = p.getUnsigned("depth", s.maxDepth);
+            s.rolloutSteps = p.getUnsigned("rollout_steps", s.rolloutSteps);
+            s.macroActionsPerNode = p.getUnsigned("macro_actions", s.macroActionsPerNode);
             s.profile = p.getCount("profile", 0) != 0;
             s.maxTreeMegabytes = detail::maxTreeMegabytes(p, "POMCP");
             s.validate();

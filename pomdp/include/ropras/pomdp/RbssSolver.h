@@ -33,9 +33,9 @@ namespace ropras::pomdp
         {
             RbssSettings s;
             s.eta = p.get("eta", s.eta);
-            s.actions = static_cast<unsigned>(p.getCount("c_a", s.actions, ParameterMap::MAX_UNSIGNED));
-            s.particles = static_cast<unsigned>(p.getCount("c_s", s.particles, ParameterMap::MAX_UNSIGNED));
-            s.depth = static_cast<unsigned>(p.getCount("depth", s.depth, ParameterMap::MAX_UNSIGNED));
+            s.actions = p.getUnsigned("c_a", s.actions);
+            s.particles = p.getUnsigned("c_s", s.particles);
+            s.depth = p.getUnsigned("depth", s.depth);
             s.sampleAction = p.getCount("sample_action", 0) != 0;
             s.validate();
             return s;

@@ -30,10 +30,10 @@ namespace ropras::pomdp
         /** \brief Cap on the particles kept per belief node (uniform subsample); 0 = keep all (the paper). */
         unsigned maxParticlesPerNode{0};
         /** \brief Belief fill: a belief node bao created by a simulation within depth D (a leaf below D is not
-            filled) also gets up to fillParticles particles drawn from b, moved through a by the model and kept when
-            they end the macro alive with the node's observation key. 0 = off (Algorithm 2: a node holds only the
-           particles that simulations brought, so a node deep in the tree holds one or two, and every macro planned
-           there is planned for the very state it is then valued on). */
+            filled) also gets up to fillParticles particles drawn from b, moved through a by the model and kept
+            when they end the macro alive with the node's observation key. 0 = off (Algorithm 2: a node holds
+            only the particles that simulations brought, so a node deep in the tree holds one or two, and every
+            macro planned there is planned for the very state it is then valued on). */
         unsigned fillParticles{0};
         /** \brief Observation progressive widening (Algorithm 2, lines 6-10) over the binned macro observations:
             a macro observation whose key has no child yet gets a new child iff |C(ba)| <= betaO N(ba)^alphaO,
@@ -86,19 +86,17 @@ namespace ropras::pomdp
 
         /** \brief Reads eta, beta_a, alpha_a, beta_o, alpha_o, macro_observation, independent_eval, depth,
             rollout_steps, heuristic_leaf, max_particles, fill_particles, sample_action, ucb_select, ucb_c,
-           value_backup, profile, max_tree_mb; throws ropras::Error for out-of-range values. */
+            value_backup, profile, max_tree_mb; throws ropras::Error for out-of-range values. */
         static RopRas3Settings fromParameters(const ParameterMap &p)
         {
             RopRas3Settings s;
             s.eta = p.get("eta", s.eta);
             s.betaA = p.get("beta_a", s.betaA);
             s.alphaA = p.get("alpha_a", s.alphaA);
-            s.maxDepth = static_cast<unsigned>(p.getCount("depth", s.maxDepth, ParameterMap::MAX_UNSIGNED));
-            s.rolloutSteps =
-                static_cast<unsigned>(p.getCount("rollout_steps", s.rolloutSteps, ParameterMap::MAX_UNSIGNED));
-            s.maxParticlesPerNode =
-                static_cast<unsigned>(p.getCount("max_particles", s.maxParticlesPerNode, ParameterMap::MAX_UNSIGNED));
-            s.fillParticles = static_cast<unsigned>(p.getCount("fill_particles", s.fillParticles, MAX_FILL_PARTICLES));
+            s.maxDepth = p.getUnsigned("depth", s.maxDepth);
+            s.rolloutSteps = p.getUnsigned("rollout_steps", s.rolloutSteps);
+            s.maxParticlesPerNode = p.getUnsigned("max_particles", s.maxParticlesPerNode);
+            s.fillParticles = p.getUnsigned("fill_particles", s.fillParticles, MAX_FILL_PARTICLES);
             s.heuristicLeaf = p.getCount("heuristic_leaf", s.heuristicLeaf ? 1 : 0, 1) != 0;
             s.betaO = p.get("beta_o", s.betaO);
             s.alphaO = p.get("alpha_o", s.alphaO);

@@ -29,13 +29,13 @@ namespace ropras::pomdp
         otherwise ActionProgressiveWiden (a new macro from the reference policy, started at s, iff
         |C(b)| <= beta_a N(b)^alpha_a, else a uniformly chosen existing child), run the macro with the
         generative model, bin the macro observation (MacroStepResult::observationKey), add s' to the child's
-        particles (with fill_particles K > 0, a child created within depth D also gets up to K particles of b moved
-        through the macro that see the same observation, fillBelief()), recurse, and Backup: N(b)++, N(ba)++, Q(ba) +=
-       (r - Q)/N(ba) with r = macro reward + gamma^len V(child), and the soft value update softValueUpdate()
-       (value_backup 0) or currentSoftValue() over the children (value_backup 1; value_backup 2 also makes Q(ba) of the
-       children's current values, freshChild()). The executed action is read off the root with pi*(a|b) ~ pibar(a|b)
-       exp(eta Q(b,a)): children were drawn from pibar, so this is argmax Q (default) or a softmax sample over the
-       children.
+        particles (with fill_particles K > 0, a child created within depth D also gets up to K particles of b
+        moved through the macro that see the same observation, fillBelief()), recurse, and Backup: N(b)++,
+        N(ba)++, Q(ba) += (r - Q)/N(ba) with r = macro reward + gamma^len V(child), and the soft value update
+        softValueUpdate() (value_backup 0) or currentSoftValue() over the children (value_backup 1; value_backup 2
+        also makes Q(ba) of the children's current values, freshChild()). The executed action is read off the
+        root with pi*(a|b) ~ pibar(a|b) exp(eta Q(b,a)): children were drawn from pibar, so this is argmax Q
+        (default) or a softmax sample over the children.
 
         Deviations (documented in doc/pomdp.md): observation widening is replaced by binning (as in the
         paper's implementation); value_backup = 1 (RopRas3Settings::ValueBackup::CURRENT) computes V from
@@ -438,7 +438,12 @@ namespace ropras::pomdp
             // a capped node keeps a uniform subsample: more draws than its cap would only replace kept ones
             const unsigned cap = settings_.maxParticlesPerNode;
             const unsigned draws = cap > 0 ? std::min(settings_.fillParticles, cap) : settings_.fillParticles;
-            for (unsigned k = 0; k < draws && !treeFull(); ++k)
+            // the memory cap, checked before every simulation, once more here: a fill adds up to K particles
+            if (treeFull())
+            {
+                return;
+            }
+            for (unsigned k = 0; k < draws; ++k)
             {
                 const State p = arena_.sample(beliefs_[b].particles, rng);
                 const auto step = detail::executeMacroCounted(*model_, p, macro, rng, settings_.profile, stats_);

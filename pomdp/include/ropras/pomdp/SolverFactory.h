@@ -66,8 +66,8 @@ namespace ropras::pomdp
             }
             if constexpr (hasActionSet<M>)
             {
-                const auto lo = static_cast<unsigned>(p.getCount("macro_min", 1, ParameterMap::MAX_UNSIGNED));
-                const auto hi = static_cast<unsigned>(p.getCount("macro_max", lo, ParameterMap::MAX_UNSIGNED));
+                const auto lo = p.getUnsigned("macro_min", 1);
+                const auto hi = p.getUnsigned("macro_max", lo);
                 return std::make_unique<RandomMacroPolicy<M>>(c.model, lo, hi);
             }
             else
@@ -111,8 +111,7 @@ namespace ropras::pomdp
                 {"bplan",
                  [](const ModelComponents<M> &c, const ParameterMap &p) -> std::unique_ptr<Solver<M>>
                  {
-                     const auto attempts =
-                         static_cast<unsigned>(p.getCount("attempts", 10, ParameterMap::MAX_UNSIGNED));
+                     const auto attempts = p.getUnsigned("attempts", 10);
                      p.getCount("profile", 0);  // accepted: B-plan always times its reference calls
                      return std::make_unique<BPlanSolver<M>>(c.model, informedPolicy(c, p, "bplan"), attempts);
                  }},

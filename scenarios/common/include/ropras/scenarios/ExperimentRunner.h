@@ -97,10 +97,10 @@ namespace ropras::scenarios
     /** \brief One JSON record for episode \a episode: experimentConfiguration() plus episode, episode_seed,
         success, terminal, discounted_return, undiscounted_return, steps, plans, invalid_plans, depletions,
         simulations, sims_per_call (mean per planning call), plan_time_s (mean seconds per call), ref_requested,
-        ref_failed, ref_failures (ref_failed / ref_requested, 0 when none was requested), max_depth, fill_tried and
-        fill_kept (ROP-RAS3's belief fill, only when it drew particles), memory_capped_plans (planning calls stopped at
-       the tree memory cap, parameter max_tree_mb), tree_mb_max (the largest tree of the episode, MiB) and wall_time_s
-       (the episode's wall-clock seconds). */
+        ref_failed, ref_failures (ref_failed / ref_requested, 0 when none was requested), max_depth, fill_tried
+        and fill_kept (ROP-RAS3's belief fill, only when it drew particles), memory_capped_plans (planning calls
+        stopped at the tree memory cap, parameter max_tree_mb), tree_mb_max (the largest tree of the episode,
+        MiB) and wall_time_s (the episode's wall-clock seconds). */
     nlohmann::json episodeRecord(const nlohmann::json &configuration, std::size_t episode, std::uint64_t seed,
                                  const pomdp::EpisodeResult &result, double wallSeconds);
 
