@@ -6,6 +6,7 @@
 #include <ompl/util/Console.h>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 
 #include "ropras/core/Error.h"
@@ -25,6 +26,22 @@ namespace ropras::pomdp
         timeLimit = params.get("plan_time", timeLimit);
         maxIterations = params.getCount("plan_iterations", maxIterations);
         shortcut = params.getCount("shortcut", shortcut ? 1 : 0) != 0;
+        const std::string prefix = PLANNER_PREFIX;
+        for (const auto &entry : params.values())
+        {
+            if (entry.first.compare(0, prefix.size(), prefix) != 0)
+                continue;
+            const std::string name = entry.first.substr(prefix.size());
+            if (name.empty())
+                throw Error("OmplPathPlanner: parameter \"" + entry.first + "\" names no planner parameter");
+            const double value = params.get(entry.first, 0.0);  // marks it used
+            char text[32];
+            if (value == std::floor(value) && std::abs(value) < 1e15)
+                std::snprintf(text, sizeof text, "%.0f", value);
+            else
+                std::snprintf(text, sizeof text, "%.17g", value);
+            plannerParams[name] = text;
+        }
         validate();
     }
 

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "PointRobotModel.h"
@@ -108,6 +110,54 @@ namespace ropras::pomdp::test
         EXPECT_THROW(Policy(std::make_shared<const PointPlanningAdapter>(),
                             std::make_unique<UniformHeuristic<State, Point2>>(space), pointRobot(), nullptr, settings),
                      Error);
+    }
+
+    // `--param planner.NAME=value` reaches the planner as plannerParams[NAME] (whole numbers without a decimal point,
+    // which OMPL's bool and unsigned parsers need); a name the planner lacks fails when the policy is built, and
+    // an empty name at once
+    TEST(OmplReferencePolicy, PlannerParametersComeFromThePlannerPrefix)
+    {
+        const ParameterMap p = ParameterMap::parse(
+            {"planner.range=0.3", "planner.dynamic_domain=0", "planner.dd_radius=2.5", "planner.max_samples=1e6"});
+        OmplPathPlannerSettings settings;
+        settings.planner = "VectorizedRRTConnect";
+        settings.readParameters(p);
+        const std::map<std::string, std::string> expected = {{"range", "0.29999999999999999"},
+                                                             {"dynamic_domain", "0"},
+                                                             {"dd_radius", "2.5"},
+                                                             {"max_samples", "1000000"}};
+        EXPECT_EQ(settings.plannerParams, expected);
+        EXPECT_NO_THROW(p.requireAllUsed("test"));
+        EXPECT_NO_THROW(makePolicy(PointRobotModel::GOAL, settings));
+
+        // the values reach the planner: the goal lies behind the wall, so a planner allowed no straight try and
+        // one sample of a 0.05 step (the new node stays near its root, out of the other root's sight) finds no
+        // path, while the same settings without the cap do
+        OmplPathPlannerSettings capped;
+        capped.planner = "VectorizedRRTConnect";
+        capped.readParameters(ParameterMap::parse({"planner.direct=0", "planner.max_samples=1", "planner.range=0.05"}));
+        auto cappedPolicy = makePolicy(PointRobotModel::GOAL, capped);
+        OmplPathPlannerSettings uncapped;
+        uncapped.planner = "VectorizedRRTConnect";
+        uncapped.readParameters(ParameterMap::parse({"planner.direct=0", "planner.range=0.05"}));
+        auto freePolicy = makePolicy(PointRobotModel::GOAL, uncapped);
+        Rng rng(11);
+        const State start = particle(0);
+        std::vector<Action> macro;
+        for (int i = 0; i < 5; ++i)
+        {
+            EXPECT_FALSE(cappedPolicy->sample(start, BeliefView<State>{&start, 1}, rng, macro));
+            EXPECT_TRUE(freePolicy->sample(start, BeliefView<State>{&start, 1}, rng, macro));
+        }
+        EXPECT_EQ(cappedPolicy->plannerStatistics().notFound, 5u);
+
+        OmplPathPlannerSettings unknown;
+        unknown.planner = "VectorizedRRTConnect";
+        unknown.readParameters(ParameterMap::parse({"planner.no_such=1"}));
+        EXPECT_THROW(makePolicy(PointRobotModel::GOAL, unknown), Error);
+
+        OmplPathPlannerSettings empty;
+        EXPECT_THROW(empty.readParameters(ParameterMap::parse({"planner.=1"})), Error);
     }
 
     // For every planner: the macro executed in the particle's world reaches the goal without collision, every

@@ -325,6 +325,8 @@ namespace ropras::scenarios::test
             EXPECT_EQ(defaults.at("ropras3").at("eta"), 0.01) << variant;
             // Ref-Basic keeps the paper's running backup (its Random3D rows fail every episode with either)
             EXPECT_EQ(defaults.count("refbasic"), 0u) << variant;
+            // every solver's reference planner takes a dynamic-domain radius for metres, not radians
+            EXPECT_EQ(asNav(*random3d).parts().defaults.at("planner.dd_radius"), 20.0) << variant;
         }
         // --config overrides a solver default like any other key; --param still overrides both at run time
         const auto deeper = navScenario("maze2d", {{"solver_defaults", {{"ropras3", {{"depth", 2}}}}}});

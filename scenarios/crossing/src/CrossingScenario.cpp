@@ -110,7 +110,8 @@ namespace ropras::scenarios
                 referencePlannerSettings(settings, params, planning.referencePlanTime, planning.resolution, seed);
             if (planner.planner == "VectorizedRRTConnect")
             {
-                planner.plannerParams["range"] = std::to_string(planning.plannerRange);
+                planner.plannerParams.emplace("range",
+                                              std::to_string(planning.plannerRange));  // unless planner.range was given
             }
             const std::size_t macroLength = params.getCount("macro_length", 5);
             auto adapter = std::make_shared<const CrossingPlanningAdapter>(model, macroLength, pedestrianId);

@@ -87,7 +87,8 @@ namespace ropras::scenarios
             planner.checker = arm->checker();  // built once per process (sharedPandaArm), not once per episode
             if (planner.planner == "VectorizedRRTConnect")
             {
-                planner.plannerParams["range"] = std::to_string(config.plannerRange);
+                planner.plannerParams.emplace("range",
+                                              std::to_string(config.plannerRange));  // unless planner.range was given
             }
             auto sampler = std::make_unique<RayDetectGoalSampler>(model, planningScene, seed ^ 0x5bd1e995ULL);
             const std::size_t macroLength = params.getCount("macro_length", 10);

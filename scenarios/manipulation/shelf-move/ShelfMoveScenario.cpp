@@ -119,7 +119,8 @@ namespace ropras::scenarios
                 referencePlannerSettings(settings, params, config.referencePlanTime, config.resolution, seed);
             if (planner.planner == "VectorizedRRTConnect")
             {
-                planner.plannerParams["range"] = std::to_string(config.plannerRange);
+                planner.plannerParams.emplace("range",
+                                              std::to_string(config.plannerRange));  // unless planner.range was given
             }
             auto ik = std::make_unique<ShelfMoveIk>(model, config.ikRestarts, seed ^ 0x5bd1e995ULL);
             auto adapter = std::make_shared<const ShelfMoveAdapter>(model, std::move(ik));

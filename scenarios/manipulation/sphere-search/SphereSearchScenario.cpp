@@ -82,7 +82,8 @@ namespace ropras::scenarios
             planner.checker = arm->checker();  // built once per process (sharedPandaArm), not once per episode
             if (planner.planner == "VectorizedRRTConnect")
             {
-                planner.plannerParams["range"] = std::to_string(config.plannerRange);
+                planner.plannerParams.emplace("range",
+                                              std::to_string(config.plannerRange));  // unless planner.range was given
             }
             ArmGoalSampler::Settings ik;
             ik.restarts = config.ikRestarts;

@@ -237,7 +237,7 @@ namespace ropras::scenarios
             if (planner.planner == "VectorizedRRTConnect")
             {
                 // the extension step suits the scenario's size (its default, 1, is for joint spaces in radians)
-                planner.plannerParams["range"] = std::to_string(range);
+                planner.plannerParams.emplace("range", std::to_string(range));  // unless planner.range was given
             }
             const std::size_t macroLength = params.getCount("macro_length", 15);
             auto adapter = std::make_shared<const NavigationPlanningAdapter>(model, macroLength);

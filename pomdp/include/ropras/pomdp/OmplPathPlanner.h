@@ -37,8 +37,13 @@ namespace ropras::pomdp
         /// scenario that already has one should: building a checker costs far more than a reference plan
         std::shared_ptr<const ompl_ext::CollisionChecker> checker;
 
-        /** \brief Reads `plan_time` (s), `plan_iterations`, `shortcut` (0/1) from \a params (other fields
-            keep their values); throws ropras::Error on a non-positive time. */
+        /// the prefix of the parameters that go to the planner itself: `planner.range=2` sets plannerParams["range"]
+        static constexpr const char *PLANNER_PREFIX = "planner.";
+
+        /** \brief Reads `plan_time` (s), `plan_iterations`, `shortcut` (0/1) and every `planner.NAME` (into
+            plannerParams[NAME]: whole numbers written without a decimal point, others with 17 digits; the planner
+            refuses a name it does not have when it is created) from \a params (other fields keep their values);
+            throws ropras::Error on a non-positive time or an empty NAME. */
         void readParameters(const ParameterMap &params);
         /// throws ropras::Error naming the bad field
         void validate() const;

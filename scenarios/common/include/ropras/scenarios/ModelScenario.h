@@ -106,7 +106,8 @@ namespace ropras::scenarios
 
     /** \brief OmplPathPlannerSettings of a reference policy: the planner named by \a settings, the scenario's
         per-plan time limit \a planTime and motion resolution, overridden by the parameters plan_time,
-        plan_iterations and shortcut; the planner seeded with \a seed when it has a "seed" parameter (ours). */
+        plan_iterations, shortcut and planner.NAME (a planner parameter; planner.seed is refused); the planner seeded
+       with \a seed when it has a "seed" parameter (ours). */
     inline pomdp::OmplPathPlannerSettings referencePlannerSettings(const RunSettings &settings,
                                                                    const pomdp::ParameterMap &params, double planTime,
                                                                    double resolution, std::uint64_t seed)
@@ -116,6 +117,10 @@ namespace ropras::scenarios
         s.timeLimit = planTime;
         s.resolution = resolution;
         s.readParameters(params);
+        if (s.plannerParams.count("seed") != 0)
+        {
+            throw Error("parameter \"planner.seed\": the reference planner is seeded from the run's seed (--seed)");
+        }
         if (s.planner == "VectorizedRRTConnect")
         {
             s.plannerParams["seed"] = std::to_string(seed % 4294967291ULL + 1);
