@@ -34,12 +34,13 @@ namespace ropras::pomdp
             const std::string name = entry.first.substr(prefix.size());
             if (name.empty())
                 throw Error("OmplPathPlanner: parameter \"" + entry.first + "\" names no planner parameter");
-            const double value = params.get(entry.first, 0.0);  // marks it used
-            char text[32];
-            if (value == std::floor(value) && std::abs(value) < 1e15)
-                std::snprintf(text, sizeof text, "%.0f", value);
-            else
-                std::snprintf(text, sizeof text, "%.17g", value);
+            double value = params.get(entry.first, 0.0);  // marks it used
+            if (value == 0.0)
+                value = 0.0;  // -0 would be written "-0", which no bool parser takes
+            // every digit of a whole number (OMPL's integer parsers stop at an exponent; the planner registry refuses
+            // what does not fit the parameter's type), 17 significant digits otherwise
+            char text[400];
+            std::snprintf(text, sizeof text, value == std::floor(value) ? "%.0f" : "%.17g", value);
             plannerParams[name] = text;
         }
         validate();

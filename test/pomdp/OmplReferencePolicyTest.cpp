@@ -118,7 +118,7 @@ namespace ropras::pomdp::test
     TEST(OmplReferencePolicy, PlannerParametersComeFromThePlannerPrefix)
     {
         const ParameterMap p = ParameterMap::parse(
-            {"planner.range=0.3", "planner.dynamic_domain=0", "planner.dd_radius=2.5", "planner.max_samples=1e6"});
+            {"planner.range=0.3", "planner.dynamic_domain=-0", "planner.dd_radius=2.5", "planner.max_samples=1e6"});
         OmplPathPlannerSettings settings;
         settings.planner = "VectorizedRRTConnect";
         settings.readParameters(p);
@@ -139,7 +139,8 @@ namespace ropras::pomdp::test
         auto cappedPolicy = makePolicy(PointRobotModel::GOAL, capped);
         OmplPathPlannerSettings uncapped;
         uncapped.planner = "VectorizedRRTConnect";
-        uncapped.readParameters(ParameterMap::parse({"planner.direct=0", "planner.range=0.05"}));
+        // (a generous time limit: the uncapped plans must not fail on a loaded machine)
+        uncapped.readParameters(ParameterMap::parse({"planner.direct=0", "planner.range=0.05", "plan_time=2"}));
         auto freePolicy = makePolicy(PointRobotModel::GOAL, uncapped);
         Rng rng(11);
         const State start = particle(0);
@@ -155,6 +156,14 @@ namespace ropras::pomdp::test
         unknown.planner = "VectorizedRRTConnect";
         unknown.readParameters(ParameterMap::parse({"planner.no_such=1"}));
         EXPECT_THROW(makePolicy(PointRobotModel::GOAL, unknown), Error);
+
+        // a whole number past 1e15 keeps every digit (OMPL's integer parsers stop at an exponent), and the
+        // registry refuses what the parameter's type cannot hold instead of wrapping it
+        OmplPathPlannerSettings huge;
+        huge.planner = "VectorizedRRTConnect";
+        huge.readParameters(ParameterMap::parse({"planner.max_samples=1e17"}));
+        EXPECT_EQ(huge.plannerParams.at("max_samples"), "100000000000000000");
+        EXPECT_THROW(makePolicy(PointRobotModel::GOAL, huge), Error);
 
         OmplPathPlannerSettings empty;
         EXPECT_THROW(empty.readParameters(ParameterMap::parse({"planner.=1"})), Error);

@@ -56,6 +56,12 @@ namespace ropras::scenarios::test
         expectErrorMentions([] { navScenario("maze2d", {{"obstacle_margin", "wide"}}); }, {"obstacle_margin"});
         expectErrorMentions(
             [] {
+                navScenario("maze2d", {{"planner_dd_radius", -2.0}});
+            },
+            {"planner_dd_radius", ">= 0"});
+        expectErrorMentions([] { navScenario("random3d-2", {{"planner_dd_radius", "wide"}}); }, {"planner_dd_radius"});
+        expectErrorMentions(
+            [] {
                 navScenario("maze2d", {{"obstacle_margin", std::numeric_limits<double>::infinity()}});
             },
             {"obstacle_margin"});
@@ -309,6 +315,7 @@ namespace ropras::scenarios::test
         // shared defaults (depth 4, beta_a 2)
         const auto maze = navScenario("maze2d");  // parts() refers into the scenario: keep it alive
         const auto &parts = asNav(*maze).parts();
+        EXPECT_EQ(parts.model->config().plannerDdRadius, 0.0);  // the planner's own default
         EXPECT_EQ(parts.solverDefaults.at("ropras3").at("depth"), 0.0);
         EXPECT_EQ(parts.solverDefaults.at("ropras3").at("beta_a"), 8.0);
         EXPECT_EQ(parts.solverDefaults.at("ropras3").at("alpha_a"), 0.0);
@@ -326,7 +333,7 @@ namespace ropras::scenarios::test
             // Ref-Basic keeps the paper's running backup (its Random3D rows fail every episode with either)
             EXPECT_EQ(defaults.count("refbasic"), 0u) << variant;
             // every solver's reference planner takes a dynamic-domain radius for metres, not radians
-            EXPECT_EQ(asNav(*random3d).parts().defaults.at("planner.dd_radius"), 20.0) << variant;
+            EXPECT_EQ(asNav(*random3d).parts().model->config().plannerDdRadius, 20.0) << variant;
         }
         // --config overrides a solver default like any other key; --param still overrides both at run time
         const auto deeper = navScenario("maze2d", {{"solver_defaults", {{"ropras3", {{"depth", 2}}}}}});

@@ -46,6 +46,7 @@
 #include <ompl/geometric/planners/sbl/pSBL.h>
 #include <ompl/geometric/planners/sst/SST.h>
 #include <ompl/geometric/planners/stride/STRIDE.h>
+#include <limits>
 #include <mutex>
 #include <sstream>
 
@@ -98,6 +99,32 @@ namespace ropras::ompl_ext
             return (... || (dynamic_cast<const ompl::base::SpecificParam<T> *>(&param) != nullptr));
         }
 
+        template <typename T>
+        bool integerBounds(const ompl::base::GenericParam &param, double &lo, double &hi)
+        {
+            if (dynamic_cast<const ompl::base::SpecificParam<T> *>(&param) == nullptr)
+                return false;
+            lo = static_cast<double>(std::numeric_limits<T>::min());
+            hi = static_cast<double>(std::numeric_limits<T>::max());
+            return true;
+        }
+
+        /// the range of the integer type \a param was declared with
+        void integerRange(const ompl::base::GenericParam &param, double &lo, double &hi)
+        {
+            lo = -9007199254740992.0;  // beyond 2^53 a double is no longer every whole number
+            hi = 9007199254740992.0;
+            double tlo = 0.0, thi = 0.0;
+            if (integerBounds<char>(param, tlo, thi) || integerBounds<int>(param, tlo, thi) ||
+                integerBounds<unsigned int>(param, tlo, thi) || integerBounds<long>(param, tlo, thi) ||
+                integerBounds<unsigned long>(param, tlo, thi) || integerBounds<long long>(param, tlo, thi) ||
+                integerBounds<unsigned long long>(param, tlo, thi))
+            {
+                lo = std::max(lo, tlo);
+                hi = std::min(hi, thi);
+            }
+        }
+
         /** A numeric parameter takes only finite numbers (whole ones for an integer parameter, 0/1/true/false for
             a bool), and nothing below the lower end of OMPL's range suggestion (range=-1 would otherwise silently
             mean "automatic"); a suggested upper end of at most 1 (a probability, goal_bias) is a bound too. Other
@@ -132,6 +159,19 @@ namespace ropras::ompl_ext
             const bool hasDefault = parseNumber(param.getValue(), current) && std::isfinite(current);
             if (integer && v != std::floor(v))
                 throw Error(where + " must be a whole number");
+            if (integer)
+            {
+                // OMPL reads integers with std::stoi / stoul, which stop at an exponent ("1e6" would be 1) and wrap
+                // what does not fit the declared type (2^32 as unsigned would be 0)
+                double lo = 0.0, hi = 0.0;
+                integerRange(param, lo, hi);
+                if (v < lo || v > hi)
+                    throw Error(where + " must be a whole number in [" + shortNumber(lo) + ", " + shortNumber(hi) +
+                                "]");
+                const std::size_t digits = value[0] == '-' || value[0] == '+' ? 1 : 0;
+                if (digits == value.size() || value.find_first_not_of("0123456789", digits) != std::string::npos)
+                    throw Error(where + " must be written as a whole number in digits (no exponent or point)");
+            }
             const std::string suggestion = param.getRangeSuggestion();
             double lo = 0.0, hi = 0.0;
             if (numericRange(suggestion, lo, hi))

@@ -142,6 +142,7 @@ namespace ropras::scenarios
         c.referencePlanTime = r.positive("reference_plan_time");
         c.planResolution = r.positive("plan_resolution");
         c.plannerRange = r.positive("planner_range");
+        c.plannerDdRadius = r.nonNegative("planner_dd_radius");
         c.dangerMargin = r.nonNegative("danger_margin");
         c.obstacleMargin = r.nonNegative("obstacle_margin");
         c.recoverFromObservation = r.choice("depletion_recovery", {"ignore", "observation"}) == "observation";

@@ -228,7 +228,8 @@ namespace ropras::scenarios
         const double planTime = config.referencePlanTime;
         const double resolution = config.planResolution;
         const double range = config.plannerRange;
-        parts.referencePolicy = [model, robot, env, tight, space, planTime, resolution, range](
+        const double ddRadius = config.plannerDdRadius;
+        parts.referencePolicy = [model, robot, env, tight, space, planTime, resolution, range, ddRadius](
                                     const RunSettings &settings, const pomdp::ParameterMap &params,
                                     std::uint64_t seed) -> std::unique_ptr<pomdp::ReferencePolicy<NavigationModel>>
         {
@@ -238,6 +239,11 @@ namespace ropras::scenarios
             {
                 // the extension step suits the scenario's size (its default, 1, is for joint spaces in radians)
                 planner.plannerParams.emplace("range", std::to_string(range));  // unless planner.range was given
+                if (ddRadius > 0.0)
+                {
+                    // the dynamic domain in metres: the planner's default radius is for radians
+                    planner.plannerParams.emplace("dd_radius", std::to_string(ddRadius));
+                }
             }
             const std::size_t macroLength = params.getCount("macro_length", 15);
             auto adapter = std::make_shared<const NavigationPlanningAdapter>(model, macroLength);

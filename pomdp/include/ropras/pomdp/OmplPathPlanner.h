@@ -41,9 +41,9 @@ namespace ropras::pomdp
         static constexpr const char *PLANNER_PREFIX = "planner.";
 
         /** \brief Reads `plan_time` (s), `plan_iterations`, `shortcut` (0/1) and every `planner.NAME` (into
-            plannerParams[NAME]: whole numbers written without a decimal point, others with 17 digits; the planner
-            refuses a name it does not have when it is created) from \a params (other fields keep their values);
-            throws ropras::Error on a non-positive time or an empty NAME. */
+            plannerParams[NAME]: whole numbers in digits, others with 17 significant digits; the planner registry
+            refuses a name the planner lacks, or a value its type cannot hold, when it is created) from \a params
+            (other fields keep their values); throws ropras::Error on a non-positive time or an empty NAME. */
         void readParameters(const ParameterMap &params);
         /// throws ropras::Error naming the bad field
         void validate() const;

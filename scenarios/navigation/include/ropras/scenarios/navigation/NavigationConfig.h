@@ -91,7 +91,10 @@ namespace ropras::scenarios
         /// the belief uses "the episode went on" as evidence (no particle stays in the goal or a danger zone);
         /// false = the paper's observation space R^n u {None} only
         bool terminationEvidence{false};
-        double plannerRange{2.0};                ///< VectorizedRRTConnect extension step (m)
+        double plannerRange{2.0};  ///< VectorizedRRTConnect extension step (m)
+        /// VectorizedRRTConnect's dynamic-domain radius (m; its dd_radius); 0 = the planner's own default (5, made
+        /// for joint spaces in radians)
+        double plannerDdRadius{0.0};
         std::map<std::string, double> defaults;  ///< solver / filter parameter defaults
         /// per solver name: its own defaults, before `defaults` (key solver_defaults; may be absent)
         std::map<std::string, std::map<std::string, double>> solverDefaults;
