@@ -378,6 +378,16 @@ TEST(OmplPlugin, RegistryChecksParameterValues)
     EXPECT_EQ(message("PRM", "max_nearest_neighbors", "2.5"),
               "planner PRM: parameter 'max_nearest_neighbors' = '2.5' must be a whole number");
     EXPECT_NE(message("PRM", "max_nearest_neighbors", "-3"), "");
+    // an integer beyond its declared type, or in a form OMPL's std::stoul would misread, is refused
+    EXPECT_EQ(message("VectorizedRRTConnect", "max_samples", "4294967296"),
+              "planner VectorizedRRTConnect: parameter 'max_samples' = '4294967296' must be a whole number in [0, "
+              "4294967295]");
+    EXPECT_EQ(message("VectorizedRRTConnect", "max_samples", "1e6"),
+              "planner VectorizedRRTConnect: parameter 'max_samples' = '1e6' must be written as a whole number in "
+              "digits (no exponent or point)");
+    EXPECT_EQ(message("VectorizedRRTConnect", "max_samples", "-1"),
+              "planner VectorizedRRTConnect: parameter 'max_samples' = '-1' must be a whole number in [0, 4294967295]");
+    EXPECT_EQ(message("VectorizedRRTConnect", "max_samples", "1000000"), "");
     EXPECT_EQ(message("VectorizedRRTConnect", "halton", "2"),
               "planner VectorizedRRTConnect: parameter 'halton' = '2' must be 0, 1, true or false");
     EXPECT_EQ(message("RRTConnect", "range", "0.5"), "");

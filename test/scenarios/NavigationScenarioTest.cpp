@@ -309,6 +309,30 @@ namespace ropras::scenarios::test
 
 namespace ropras::scenarios::test
 {
+    TEST(NavigationScenario, ThePlannerScaleGoesToVectorizedRRTConnectUnlessOverridden)
+    {
+        // a scenario's step and dynamic-domain radius reach our planner; planner.NAME wins over them; an OMPL
+        // planner, which has neither parameter, gets none; 0 keeps the planner's own value
+        RunSettings settings;
+        const PlannerScale scale{5.0, 20.0};
+        auto s = referencePlannerSettings(settings, pomdp::ParameterMap(), 0.003, 0.25, 7, scale);
+        EXPECT_EQ(s.plannerParams.at("range"), std::to_string(5.0));
+        EXPECT_EQ(s.plannerParams.at("dd_radius"), std::to_string(20.0));
+        EXPECT_EQ(s.plannerParams.at("seed"), "8");
+        s = referencePlannerSettings(settings, pomdp::ParameterMap::parse({"planner.dd_radius=7"}), 0.003, 0.25, 7,
+                                     scale);
+        EXPECT_EQ(s.plannerParams.at("dd_radius"), "7");
+        EXPECT_EQ(s.plannerParams.at("range"), std::to_string(5.0));
+        s = referencePlannerSettings(settings, pomdp::ParameterMap(), 0.003, 0.25, 7, PlannerScale{5.0, 0.0});
+        EXPECT_EQ(s.plannerParams.count("dd_radius"), 0u);
+        settings.planner = "RRTConnect";
+        s = referencePlannerSettings(settings, pomdp::ParameterMap(), 0.003, 0.25, 7, scale);
+        EXPECT_TRUE(s.plannerParams.empty());
+        expectErrorMentions(
+            [&] { referencePlannerSettings(settings, pomdp::ParameterMap::parse({"planner.seed=3"}), 0.003, 0.25, 7); },
+            {"planner.seed", "--seed"});
+    }
+
     TEST(NavigationScenario, SolverDefaultsAreCheckedAndApplyToTheirSolver)
     {
         // maze2d's ROP-RAS3 searches one macro level with nine candidate macros; the other solvers keep the

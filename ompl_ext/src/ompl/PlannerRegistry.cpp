@@ -46,6 +46,7 @@
 #include <ompl/geometric/planners/sbl/pSBL.h>
 #include <ompl/geometric/planners/sst/SST.h>
 #include <ompl/geometric/planners/stride/STRIDE.h>
+#include <iomanip>
 #include <limits>
 #include <mutex>
 #include <sstream>
@@ -109,20 +110,18 @@ namespace ropras::ompl_ext
             return true;
         }
 
-        /// the range of the integer type \a param was declared with
-        void integerRange(const ompl::base::GenericParam &param, double &lo, double &hi)
+        /** \brief Whether \a param was declared with an integer type; if so, that type's range in [lo, hi], within
+            +-2^53 (beyond it a double no longer holds every whole number). */
+        bool integerRange(const ompl::base::GenericParam &param, double &lo, double &hi)
         {
-            lo = -9007199254740992.0;  // beyond 2^53 a double is no longer every whole number
-            hi = 9007199254740992.0;
-            double tlo = 0.0, thi = 0.0;
-            if (integerBounds<char>(param, tlo, thi) || integerBounds<int>(param, tlo, thi) ||
-                integerBounds<unsigned int>(param, tlo, thi) || integerBounds<long>(param, tlo, thi) ||
-                integerBounds<unsigned long>(param, tlo, thi) || integerBounds<long long>(param, tlo, thi) ||
-                integerBounds<unsigned long long>(param, tlo, thi))
-            {
-                lo = std::max(lo, tlo);
-                hi = std::min(hi, thi);
-            }
+            if (!(integerBounds<char>(param, lo, hi) || integerBounds<int>(param, lo, hi) ||
+                  integerBounds<unsigned int>(param, lo, hi) || integerBounds<long>(param, lo, hi) ||
+                  integerBounds<unsigned long>(param, lo, hi) || integerBounds<long long>(param, lo, hi) ||
+                  integerBounds<unsigned long long>(param, lo, hi)))
+                return false;
+            lo = std::max(lo, -9007199254740992.0);
+            hi = std::min(hi, 9007199254740992.0);
+            return true;
         }
 
         /** A numeric parameter takes only finite numbers (whole ones for an integer parameter, 0/1/true/false for
@@ -133,8 +132,8 @@ namespace ropras::ompl_ext
                                  const std::string &value)
         {
             const bool boolean = isParamOfType<bool>(param);
-            const bool integer =
-                isParamOfType<char, int, unsigned int, long, unsigned long, long long, unsigned long long>(param);
+            double integerLo = 0.0, integerHi = 0.0;
+            const bool integer = integerRange(param, integerLo, integerHi);
             const bool real = isParamOfType<float, double, long double>(param);
             if (!boolean && !integer && !real)
                 return;
@@ -163,11 +162,12 @@ namespace ropras::ompl_ext
             {
                 // OMPL reads integers with std::stoi / stoul, which stop at an exponent ("1e6" would be 1) and wrap
                 // what does not fit the declared type (2^32 as unsigned would be 0)
-                double lo = 0.0, hi = 0.0;
-                integerRange(param, lo, hi);
-                if (v < lo || v > hi)
-                    throw Error(where + " must be a whole number in [" + shortNumber(lo) + ", " + shortNumber(hi) +
-                                "]");
+                if (v < integerLo || v > integerHi)
+                {
+                    std::ostringstream range;
+                    range << std::fixed << std::setprecision(0) << "[" << integerLo << ", " << integerHi << "]";
+                    throw Error(where + " must be a whole number in " + range.str());
+                }
                 const std::size_t digits = value[0] == '-' || value[0] == '+' ? 1 : 0;
                 if (digits == value.size() || value.find_first_not_of("0123456789", digits) != std::string::npos)
                     throw Error(where + " must be written as a whole number in digits (no exponent or point)");
@@ -188,8 +188,6 @@ namespace ropras::ompl_ext
                     throw Error(where + " must be <= " + shortNumber(hi) + " (OMPL's range for it: " + suggestion +
                                 ")");
             }
-            else if (integer && v < 0.0 && !isParamOfType<char, int, long, long long>(param))
-                throw Error(where + " must be >= 0");
         }
     }  // namespace
 

@@ -106,13 +106,8 @@ namespace ropras::scenarios
                                     std::uint64_t seed) -> std::unique_ptr<pomdp::ReferencePolicy<CrossingModel>>
         {
             auto heuristic = makeSamplingHeuristic<CrossingState, CrossingTarget>(settings, space);
-            auto planner =
-                referencePlannerSettings(settings, params, planning.referencePlanTime, planning.resolution, seed);
-            if (planner.planner == "VectorizedRRTConnect")
-            {
-                planner.plannerParams.emplace("range",
-                                              std::to_string(planning.plannerRange));  // unless planner.range was given
-            }
+            auto planner = referencePlannerSettings(settings, params, planning.referencePlanTime, planning.resolution,
+                                                    seed, {planning.plannerRange});
             const std::size_t macroLength = params.getCount("macro_length", 5);
             auto adapter = std::make_shared<const CrossingPlanningAdapter>(model, macroLength, pedestrianId);
             return std::make_unique<pomdp::OmplReferencePolicy<CrossingModel, CrossingTarget>>(

@@ -82,14 +82,9 @@ namespace ropras::scenarios
                                     std::uint64_t seed) -> std::unique_ptr<pomdp::ReferencePolicy<RayDetectModel>>
         {
             auto heuristic = makeSamplingHeuristic<RayDetectModel::State, RayDetectTarget>(settings, space);
-            auto planner =
-                referencePlannerSettings(settings, params, config.referencePlanTime, config.resolution, seed);
+            auto planner = referencePlannerSettings(settings, params, config.referencePlanTime, config.resolution, seed,
+                                                    {config.plannerRange});
             planner.checker = arm->checker();  // built once per process (sharedPandaArm), not once per episode
-            if (planner.planner == "VectorizedRRTConnect")
-            {
-                planner.plannerParams.emplace("range",
-                                              std::to_string(config.plannerRange));  // unless planner.range was given
-            }
             auto sampler = std::make_unique<RayDetectGoalSampler>(model, planningScene, seed ^ 0x5bd1e995ULL);
             const std::size_t macroLength = params.getCount("macro_length", 10);
             auto adapter = std::make_shared<const RayDetectPlanningAdapter>(std::move(sampler), config.step,

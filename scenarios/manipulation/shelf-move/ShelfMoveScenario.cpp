@@ -115,13 +115,8 @@ namespace ropras::scenarios
                                     std::uint64_t seed) -> std::unique_ptr<pomdp::ReferencePolicy<ShelfMoveModel>>
         {
             auto heuristic = makeSamplingHeuristic<ShelfMoveModel::State, ShelfTarget>(settings, space);
-            auto planner =
-                referencePlannerSettings(settings, params, config.referencePlanTime, config.resolution, seed);
-            if (planner.planner == "VectorizedRRTConnect")
-            {
-                planner.plannerParams.emplace("range",
-                                              std::to_string(config.plannerRange));  // unless planner.range was given
-            }
+            auto planner = referencePlannerSettings(settings, params, config.referencePlanTime, config.resolution, seed,
+                                                    {config.plannerRange});
             auto ik = std::make_unique<ShelfMoveIk>(model, config.ikRestarts, seed ^ 0x5bd1e995ULL);
             auto adapter = std::make_shared<const ShelfMoveAdapter>(model, std::move(ik));
             return std::make_unique<pomdp::OmplReferencePolicy<ShelfMoveModel, ShelfTarget>>(

@@ -77,14 +77,9 @@ namespace ropras::scenarios
                                     std::uint64_t seed) -> std::unique_ptr<pomdp::ReferencePolicy<SphereSearchModel>>
         {
             auto heuristic = makeSamplingHeuristic<SphereSearchModel::State, ArmTarget>(settings, space);
-            auto planner =
-                referencePlannerSettings(settings, params, config.referencePlanTime, config.resolution, seed);
+            auto planner = referencePlannerSettings(settings, params, config.referencePlanTime, config.resolution, seed,
+                                                    {config.plannerRange});
             planner.checker = arm->checker();  // built once per process (sharedPandaArm), not once per episode
-            if (planner.planner == "VectorizedRRTConnect")
-            {
-                planner.plannerParams.emplace("range",
-                                              std::to_string(config.plannerRange));  // unless planner.range was given
-            }
             ArmGoalSampler::Settings ik;
             ik.restarts = config.ikRestarts;
             ik.points = config.ikPoints;

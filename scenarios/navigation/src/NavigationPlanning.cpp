@@ -227,24 +227,14 @@ namespace ropras::scenarios
         parts.model = model;
         const double planTime = config.referencePlanTime;
         const double resolution = config.planResolution;
-        const double range = config.plannerRange;
-        const double ddRadius = config.plannerDdRadius;
-        parts.referencePolicy = [model, robot, env, tight, space, planTime, resolution, range, ddRadius](
+        const PlannerScale scale{config.plannerRange, config.plannerDdRadius};
+        parts.referencePolicy = [model, robot, env, tight, space, planTime, resolution, scale](
                                     const RunSettings &settings, const pomdp::ParameterMap &params,
                                     std::uint64_t seed) -> std::unique_ptr<pomdp::ReferencePolicy<NavigationModel>>
         {
             auto heuristic = makeSamplingHeuristic<NavState, NavTarget>(settings, space);
-            auto planner = referencePlannerSettings(settings, params, planTime, resolution, seed);
-            if (planner.planner == "VectorizedRRTConnect")
-            {
-                // the extension step suits the scenario's size (its default, 1, is for joint spaces in radians)
-                planner.plannerParams.emplace("range", std::to_string(range));  // unless planner.range was given
-                if (ddRadius > 0.0)
-                {
-                    // the dynamic domain in metres: the planner's default radius is for radians
-                    planner.plannerParams.emplace("dd_radius", std::to_string(ddRadius));
-                }
-            }
+            // the extension step and dynamic-domain radius in metres (the planner's defaults are for radians)
+            auto planner = referencePlannerSettings(settings, params, planTime, resolution, seed, scale);
             const std::size_t macroLength = params.getCount("macro_length", 15);
             auto adapter = std::make_shared<const NavigationPlanningAdapter>(model, macroLength);
             auto policy = std::make_unique<pomdp::OmplReferencePolicy<NavigationModel, NavTarget>>(

@@ -104,13 +104,23 @@ namespace ropras::scenarios
         return h;
     }
 
+    /** \brief The scale of a scenario's space for VectorizedRRTConnect, whose defaults are made for joint spaces in
+        radians: its extension step `range` and dynamic-domain radius `dd_radius`; 0 keeps the planner's own. */
+    struct PlannerScale
+    {
+        double range{0.0};
+        double ddRadius{0.0};
+    };
+
     /** \brief OmplPathPlannerSettings of a reference policy: the planner named by \a settings, the scenario's
         per-plan time limit \a planTime and motion resolution, overridden by the parameters plan_time,
-        plan_iterations, shortcut and planner.NAME (a planner parameter; planner.seed is refused); the planner seeded
-       with \a seed when it has a "seed" parameter (ours). */
+        plan_iterations, shortcut and planner.NAME (a planner parameter; planner.seed is refused). VectorizedRRTConnect
+        also gets \a scale (where planner.range or planner.dd_radius do not override it) and is seeded with \a seed;
+        other planners have neither parameter. */
     inline pomdp::OmplPathPlannerSettings referencePlannerSettings(const RunSettings &settings,
                                                                    const pomdp::ParameterMap &params, double planTime,
-                                                                   double resolution, std::uint64_t seed)
+                                                                   double resolution, std::uint64_t seed,
+                                                                   const PlannerScale &scale = PlannerScale())
     {
         pomdp::OmplPathPlannerSettings s;
         s.planner = settings.planner;
@@ -124,6 +134,14 @@ namespace ropras::scenarios
         if (s.planner == "VectorizedRRTConnect")
         {
             s.plannerParams["seed"] = std::to_string(seed % 4294967291ULL + 1);
+            if (scale.range > 0.0)
+            {
+                s.plannerParams.emplace("range", std::to_string(scale.range));
+            }
+            if (scale.ddRadius > 0.0)
+            {
+                s.plannerParams.emplace("dd_radius", std::to_string(scale.ddRadius));
+            }
         }
         s.validate();
         return s;
