@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <vector>
 
@@ -354,4 +355,102 @@ TEST(SoftBackupTest, FreshBackupMakesEveryQOfTheChildrenAsTheyStand)
             EXPECT_GT(off, checked / 4) << "the running mean of returns remembers past child values";
         }
     }
+}
+
+namespace
+{
+    // Every action is the same lottery: +800 with probability 0.1, else 0, never terminal. Every Q(b, a) of a
+    // belief with h action levels left is therefore 80 (1 + 0.95 + ... + 0.95^(h-1)), and so is Theorem 1's value,
+    // whatever eta: the soft maximum of equal Q is their common value.
+    struct LotteryModel
+    {
+        using State = int;
+        using Action = int;
+        using Observation = int;
+
+        StepResult<State, Observation> step(State s, Action, Rng &rng) const noexcept
+        {
+            return {s + 1, 0, rng.uniform01() < 0.1 ? 800.0 : 0.0, false};
+        }
+        double observationProbability(Observation, State, Action) const noexcept { return 1.0; }
+        State sampleInitialState(Rng &) const noexcept { return 0; }
+        double discount() const noexcept { return 0.95; }
+        std::size_t numActions() const noexcept { return 3; }
+        Action action(std::size_t i) const noexcept { return static_cast<Action>(i); }
+    };
+}  // namespace
+
+// With eta = 0.01 and rewards of +800, a node whose children each hold a few returns is valued near the luckiest of
+// them: the plug-in soft maximum over noisy Q estimates is biased upwards, and the bias climbs the tree. q_prior
+// shrinks each Q towards the node's mean before the soft maximum; the root value then stays near the exact one.
+TEST(SoftBackupTest, QPriorShrinksFewVisitEstimatesTowardsTheNodeMean)
+{
+    auto model = std::make_shared<LotteryModel>();
+    const unsigned maxDepth = 3;  // four action levels
+    const double exact = 80.0 * (1.0 + 0.95 + 0.95 * 0.95 + 0.95 * 0.95 * 0.95);
+    const auto meanError = [&](double qPrior)
+    {
+        double sum = 0.0;
+        for (int seed = 0; seed < 4; ++seed)
+        {
+            RopRas3Settings settings;
+            settings.eta = 0.01;
+            settings.maxDepth = maxDepth;
+            settings.rolloutSteps = 0;
+            settings.valueBackup = RopRas3Settings::ValueBackup::CURRENT;
+            settings.qPrior = qPrior;
+            RopRas3Solver<LotteryModel> solver(model, std::make_unique<RandomMacroPolicy<LotteryModel>>(model, 1, 1),
+                                               settings);
+            const int particle = 0;
+            ropras::pomdp::Rng rng(300 + seed);
+            const auto result = solver.plan(BeliefView<int>{&particle, 1}, Budget::ofSimulations(20000), rng);
+            EXPECT_TRUE(result.valid);
+            sum += result.statistics.rootValue - exact;
+            if (seed == 0 && qPrior > 0.0)
+            {
+                // every node's value is Theorem 1 over its children's shrunk estimates
+                TreeSnapshot tree;
+                EXPECT_TRUE(solver.treeSnapshot(tree));
+                std::size_t checked = 0;
+                for (const auto &belief : tree.beliefs)
+                {
+                    std::vector<double> q, w;
+                    double mean = 0.0, visits = 0.0;
+                    for (const std::uint32_t a : belief.children)
+                    {
+                        mean += tree.actions[a].visits * tree.actions[a].q;
+                        visits += tree.actions[a].visits;
+                    }
+                    for (const std::uint32_t a : belief.children)
+                    {
+                        const double n = tree.actions[a].visits;
+                        q.push_back((n * tree.actions[a].q + qPrior * mean / visits) / (n + qPrior));
+                        w.push_back(n);
+                    }
+                    if (q.size() < 2 || belief.depth > maxDepth)
+                    {
+                        continue;
+                    }
+                    ++checked;
+                    EXPECT_NEAR(belief.value, softValue(q.data(), w.data(), q.size(), 0.01), 1e-9 * 1000.0);
+                }
+                EXPECT_GT(checked, 100u);
+            }
+        }
+        return sum / 4.0;
+    };
+    const double plain = meanError(0.0);
+    const double shrunk = meanError(4.0);
+    std::printf("root value - exact (%.1f): q_prior 0 %+.1f, q_prior 4 %+.1f\n", exact, plain, shrunk);
+    EXPECT_GT(plain, 100.0) << "the plug-in soft maximum over few-return children is biased upwards";
+    EXPECT_LT(std::abs(shrunk), plain / 3.0);
+
+    ParameterMap p;
+    p.set("q_prior", 2.5);
+    EXPECT_THROW(RopRas3Settings::fromParameters(p), ropras::Error) << "the running backup does not read q_prior";
+    p.set("value_backup", 1);
+    EXPECT_DOUBLE_EQ(RopRas3Settings::fromParameters(p).qPrior, 2.5);
+    p.set("q_prior", -1.0);
+    EXPECT_THROW(RopRas3Settings::fromParameters(p), ropras::Error);
+    EXPECT_THROW(p.set("q_prior", std::nan("")), ropras::Error);
 }

@@ -264,15 +264,23 @@ namespace ropras::pomdp::test
         run(WaitGuessModel<false>{}, 0, q, tree);
         EXPECT_NEAR(q, 0.9, 1e-9) << "one particle per node: the guess is planned and valued on it";
         for (std::size_t i = 1; i < tree.beliefs.size(); ++i)
+        {
             if (tree.beliefs[i].depth == 1)
+            {
                 EXPECT_EQ(tree.beliefs[i].particles, 1u);
+            }
+        }
         run(WaitGuessModel<false>{}, 30, q, tree);
         // planned from one of the node's 31 particles, valued on an independent draw from them: right w.p.
         // E[p^2 + (1 - p)^2] with 31 p ~ Binomial(31, 1/2) arrivals and fills, i.e. 16/31
         EXPECT_NEAR(q, 0.9 * 16.0 / 31.0, 4.0 * se) << "the node holds both sides: half the guesses miss";
         for (std::size_t i = 1; i < tree.beliefs.size(); ++i)
+        {
             if (tree.beliefs[i].depth == 1)
+            {
                 EXPECT_EQ(tree.beliefs[i].particles, 31u) << "a wait never ends and never tells: all 30 kept";
+            }
+        }
         run(WaitGuessModel<true>{}, 30, q, tree);
         EXPECT_NEAR(q, 0.9, 1e-9) << "the fill keeps only the particles of the observed side";
         std::uint32_t kept = 0, nodes = 0;

@@ -487,18 +487,34 @@ namespace ropras::pomdp
         }
 
         /** \brief Theorem 1 over the current children, (1/eta) log sum_a N(ba)/N(b) exp(eta Q(b, a)) (softValueOf;
-            every backup at b increments one child, so sum N(ba) = N(b)). One exp per child: kept exact rather
+            every backup at b increments one child, so sum N(ba) = N(b)), each Q shrunk by q_prior pseudo-visits
+            towards the children's visit-weighted mean (RopRas3Settings::qPrior). One exp per child: kept exact rather
             than updated incrementally from V, whose rounding error would grow relative to the sum as the
             children's Q fall. */
         double currentSoftValue(std::uint32_t b) const noexcept
         {
             const BeliefView<std::uint32_t> children = childArena_.view(beliefs_[b].children);
+            const double k = settings_.qPrior;
+            double mean = 0.0;
+            if (k > 0.0)
+            {
+                double visits = 0.0;
+                for (std::size_t i = 0; i < children.size; ++i)
+                {
+                    const ActionNode &a = actions_[children[i]];
+                    mean += static_cast<double>(a.visits) * a.q;
+                    visits += static_cast<double>(a.visits);
+                }
+                mean = visits > 0.0 ? mean / visits : 0.0;
+            }
             return softValueOf(
                 children.size,
                 [&](std::size_t i)
                 {
                     const ActionNode &a = actions_[children[i]];
-                    return std::pair<double, double>(a.q, static_cast<double>(a.visits));
+                    const double n = static_cast<double>(a.visits);
+                    const double q = k > 0.0 ? (n * a.q + k * mean) / (n + k) : a.q;
+                    return std::pair<double, double>(q, n);
                 },
                 settings_.eta);
         }
