@@ -388,7 +388,7 @@ TEST(SoftBackupTest, QPriorShrinksFewVisitEstimatesTowardsTheNodeMean)
     auto model = std::make_shared<LotteryModel>();
     const unsigned maxDepth = 3;  // four action levels
     const double exact = 80.0 * (1.0 + 0.95 + 0.95 * 0.95 + 0.95 * 0.95 * 0.95);
-    const auto meanError = [&](double qPrior)
+    const auto meanError = [&](double qPrior, RopRas3Settings::ValueBackup backup)
     {
         double sum = 0.0;
         for (int seed = 0; seed < 4; ++seed)
@@ -397,7 +397,7 @@ TEST(SoftBackupTest, QPriorShrinksFewVisitEstimatesTowardsTheNodeMean)
             settings.eta = 0.01;
             settings.maxDepth = maxDepth;
             settings.rolloutSteps = 0;
-            settings.valueBackup = RopRas3Settings::ValueBackup::CURRENT;
+            settings.valueBackup = backup;
             settings.qPrior = qPrior;
             RopRas3Solver<LotteryModel> solver(model, std::make_unique<RandomMacroPolicy<LotteryModel>>(model, 1, 1),
                                                settings);
@@ -439,11 +439,17 @@ TEST(SoftBackupTest, QPriorShrinksFewVisitEstimatesTowardsTheNodeMean)
         }
         return sum / 4.0;
     };
-    const double plain = meanError(0.0);
-    const double shrunk = meanError(4.0);
-    std::printf("root value - exact (%.1f): q_prior 0 %+.1f, q_prior 4 %+.1f\n", exact, plain, shrunk);
+    const double plain = meanError(0.0, RopRas3Settings::ValueBackup::CURRENT);
+    const double shrunk = meanError(4.0, RopRas3Settings::ValueBackup::CURRENT);
+    // value_backup 2 makes Q of the children's current (shrunk) values too
+    const double plainFresh = meanError(0.0, RopRas3Settings::ValueBackup::FRESH);
+    const double shrunkFresh = meanError(4.0, RopRas3Settings::ValueBackup::FRESH);
+    std::printf("root value - exact (%.1f): q_prior 0 %+.1f, q_prior 4 %+.1f; value_backup 2: %+.1f, %+.1f\n", exact,
+                plain, shrunk, plainFresh, shrunkFresh);
     EXPECT_GT(plain, 100.0) << "the plug-in soft maximum over few-return children is biased upwards";
     EXPECT_LT(std::abs(shrunk), plain / 3.0);
+    EXPECT_GT(plainFresh, 100.0);
+    EXPECT_LT(std::abs(shrunkFresh), plainFresh / 3.0);
 
     ParameterMap p;
     p.set("q_prior", 2.5);

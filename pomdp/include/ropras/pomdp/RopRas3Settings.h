@@ -78,9 +78,10 @@ namespace ropras::pomdp
         ValueBackup valueBackup{ValueBackup::RUNNING};
         /** \brief value_backup CURRENT / FRESH: each Q(b, a) enters Theorem 1 shrunk towards the node's mean
             m(b) = sum_a N(ba) Q(b, a) / N(b) as (N(ba) Q(b, a) + k m(b)) / (N(ba) + k), k = qPrior pseudo-visits
-            (the posterior mean of Q(b, a) under a prior centred on the reference policy's value). 0 = off. A child
-            valued by one or two returns otherwise enters the soft maximum at face value: with rewards of +800 and
-            eta = 0.01, one lucky return among seven children lifts V(b) by some 500 above every child's mean. */
+            (the posterior mean of Q(b, a) under a prior centred on the mean of the node's sampled children). 0 = off.
+            A child valued by one or two returns otherwise enters the soft maximum at face value: with rewards of +800
+            and eta = 0.01, seven children of true Q 80 of which one returned +800 give V(b) = 606, far above their
+            mean (114) and their true Q (80). */
         double qPrior{0.0};
         /** \brief Measure time spent in the model and in the reference policy (two clock reads per call). */
         bool profile{false};
