@@ -217,6 +217,48 @@ namespace
         return std::make_unique<RopRas3Solver<GambleChainModel>>(
             model, std::make_unique<RandomMacroPolicy<GambleChainModel>>(model, 1, 1), settings);
     }
+
+    struct NodeCheck
+    {
+        std::size_t checked{0};  ///< belief nodes with at least two visited children
+        std::size_t deep{0};     ///< of them at depth >= 2
+    };
+
+    /// every belief node of \a tree with two or more visited children has V = Theorem 1 over them, each Q shrunk by
+    /// \a qPrior pseudo-visits towards the children's visit-weighted mean (qPrior 0: the plain estimates)
+    NodeCheck expectTheorem1AtEveryNode(const TreeSnapshot &tree, double eta, double qPrior, double tolerance)
+    {
+        NodeCheck out;
+        for (const auto &belief : tree.beliefs)
+        {
+            std::vector<double> q, w;
+            double mean = 0.0, visits = 0.0;
+            for (const std::uint32_t a : belief.children)
+            {
+                mean += tree.actions[a].visits * tree.actions[a].q;
+                visits += tree.actions[a].visits;
+            }
+            for (const std::uint32_t a : belief.children)
+            {
+                const double n = tree.actions[a].visits;
+                if (n > 0.0)
+                {
+                    q.push_back(qPrior > 0.0 ? (n * tree.actions[a].q + qPrior * mean / visits) / (n + qPrior)
+                                             : tree.actions[a].q);
+                    w.push_back(n);
+                }
+            }
+            if (q.size() < 2)
+            {
+                continue;
+            }
+            ++out.checked;
+            out.deep += belief.depth >= 2 ? 1 : 0;
+            EXPECT_NEAR(belief.value, softValue(q.data(), w.data(), q.size(), eta), tolerance)
+                << "belief at depth " << belief.depth << " with " << belief.visits << " visits";
+        }
+        return out;
+    }
 }  // namespace
 
 // With noisy returns, Algorithm 2's running backup keeps every early Q estimate in its mean of exp(eta Q): one
@@ -278,29 +320,9 @@ TEST(SoftBackupTest, CurrentBackupHoldsAtEveryNodeOfADeepTree)
     ASSERT_TRUE(result.valid);
     TreeSnapshot tree;
     ASSERT_TRUE(solver->treeSnapshot(tree));
-    std::size_t checked = 0, deep = 0;
-    for (const auto &belief : tree.beliefs)
-    {
-        std::vector<double> q, w;
-        for (const std::uint32_t a : belief.children)
-        {
-            if (tree.actions[a].visits > 0)
-            {
-                q.push_back(tree.actions[a].q);
-                w.push_back(tree.actions[a].visits);
-            }
-        }
-        if (q.size() < 2)
-        {
-            continue;
-        }
-        ++checked;
-        deep += belief.depth >= 2 ? 1 : 0;
-        EXPECT_NEAR(belief.value, softValue(q.data(), w.data(), q.size(), solver->settings().eta), 1e-9 * 2000.0)
-            << "belief at depth " << belief.depth << " with " << belief.visits << " visits";
-    }
-    EXPECT_GT(checked, 20u);
-    EXPECT_GT(deep, 5u);
+    const NodeCheck nodes = expectTheorem1AtEveryNode(tree, solver->settings().eta, 0.0, 1e-9 * 2000.0);
+    EXPECT_GT(nodes.checked, 20u);
+    EXPECT_GT(nodes.deep, 5u);
 }
 
 // value_backup=2 also makes Q(b, a) of the children as they stand: for a walk (reward -1, discount 0.95, never
@@ -411,30 +433,7 @@ TEST(SoftBackupTest, QPriorShrinksFewVisitEstimatesTowardsTheNodeMean)
                 // every node's value is Theorem 1 over its children's shrunk estimates
                 TreeSnapshot tree;
                 EXPECT_TRUE(solver.treeSnapshot(tree));
-                std::size_t checked = 0;
-                for (const auto &belief : tree.beliefs)
-                {
-                    std::vector<double> q, w;
-                    double mean = 0.0, visits = 0.0;
-                    for (const std::uint32_t a : belief.children)
-                    {
-                        mean += tree.actions[a].visits * tree.actions[a].q;
-                        visits += tree.actions[a].visits;
-                    }
-                    for (const std::uint32_t a : belief.children)
-                    {
-                        const double n = tree.actions[a].visits;
-                        q.push_back((n * tree.actions[a].q + qPrior * mean / visits) / (n + qPrior));
-                        w.push_back(n);
-                    }
-                    if (q.size() < 2 || belief.depth > maxDepth)
-                    {
-                        continue;
-                    }
-                    ++checked;
-                    EXPECT_NEAR(belief.value, softValue(q.data(), w.data(), q.size(), 0.01), 1e-9 * 1000.0);
-                }
-                EXPECT_GT(checked, 100u);
+                EXPECT_GT(expectTheorem1AtEveryNode(tree, 0.01, qPrior, 1e-9 * 1000.0).checked, 100u);
             }
         }
         return sum / 4.0;
