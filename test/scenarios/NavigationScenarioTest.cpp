@@ -346,7 +346,8 @@ namespace ropras::scenarios::test
         EXPECT_EQ(parts.defaults.at("depth"), 4.0);
         EXPECT_EQ(parts.solverDefaults.count("rpomcp"), 0u);
         // Random3D's ROP-RAS3 backs V up from the current Q estimates (value_backup 1), fills new nodes with 16
-        // particles of their parent and softens the backup (eta 0.01; doc/scenario-random3d.md)
+        // particles of their parent, softens the backup (eta 0.01) and shrinks few-return Q estimates towards their
+        // node's mean in it (q_prior 4; doc/scenario-random3d.md)
         for (const char *variant : {"random3d-1", "random3d-4"})
         {
             const auto random3d = navScenario(variant);
@@ -354,6 +355,7 @@ namespace ropras::scenarios::test
             EXPECT_EQ(defaults.at("ropras3").at("value_backup"), 1.0) << variant;
             EXPECT_EQ(defaults.at("ropras3").at("fill_particles"), 16.0) << variant;
             EXPECT_EQ(defaults.at("ropras3").at("eta"), 0.01) << variant;
+            EXPECT_EQ(defaults.at("ropras3").at("q_prior"), 4.0) << variant;
             // Ref-Basic keeps the paper's running backup (its Random3D rows fail every episode with either)
             EXPECT_EQ(defaults.count("refbasic"), 0u) << variant;
             // every solver's reference planner takes a dynamic-domain radius for metres, not radians

@@ -144,7 +144,8 @@ namespace ropras::pomdp
             if (qPrior > 0.0 && valueBackup == ValueBackup::RUNNING)
             {
                 throw Error("ROP-RAS3: q_prior = " + std::to_string(qPrior) +
-                            " needs value_backup 1 or 2 (the running backup of value_backup 0 does not use it)");
+                            " needs value_backup 1 or 2 (the running backup of value_backup 0 does not use it; with "
+                            "value_backup 0 set q_prior=0 too: a scenario's solver defaults may set it)");
             }
             if (!(betaO >= 0.0) || !std::isfinite(betaO) || !(alphaO >= 0.0) || !std::isfinite(alphaO))
             {
