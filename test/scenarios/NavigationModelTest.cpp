@@ -333,6 +333,47 @@ namespace ropras::scenarios::test
         }
     }
 
+    TEST(NavigationModel, HeuristicDecayDiscountsOnlyTheGoalRewardPerStepOfTheField)
+    {
+        // heuristic_decay rho: goal_reward (gamma rho)^d + the step rewards of the d steps, d the field's distance
+        const double rho = 0.98;
+        const auto plain = navScenario("random3d-2", {{"heuristic_value", true}});
+        const auto decayed = navScenario("random3d-2", {{"heuristic_value", true}, {"heuristic_decay", rho}});
+        const auto &a = *asNav(*plain).parts().model;
+        const auto &b = *asNav(*decayed).parts().model;
+        const double *p = a.config().starts.front().data();
+        const NavState start = at(p[0], p[1], p[2]);
+        const long d = b.goalDistance(p);
+        ASSERT_GT(d, 40);
+        EXPECT_EQ(a.goalDistance(p), d);
+        const double g = b.discount();
+        const double gd = std::pow(g, static_cast<double>(d));
+        const double expected = 800.0 * gd * std::pow(rho, static_cast<double>(d)) - 0.1 * (1.0 - gd) / (1.0 - g);
+        EXPECT_NEAR(b.heuristicValue(start), expected, 1e-9);
+        // the same steps, a smaller goal term: the difference is the goal reward's share rho^d takes away
+        EXPECT_NEAR(a.heuristicValue(start) - b.heuristicValue(start),
+                    800.0 * gd * (1.0 - std::pow(rho, static_cast<double>(d))), 1e-9);
+        // a cell next to the goal (d = 1) keeps rho of it, the goal cell all of it
+        NavState next = start;
+        bool found = false;
+        for (int i = -60; i <= 60 && !found; ++i)
+            for (int j = -60; j <= 60 && !found; ++j)
+                for (int k = -60; k <= 60 && !found; ++k)
+                {
+                    const double q[3] = {p[0] + 0.5 * i, p[1] + 0.5 * j, p[2] + 0.5 * k};
+                    if (b.goalDistance(q) == 1)
+                    {
+                        next = at(q[0], q[1], q[2]);
+                        found = true;
+                    }
+                }
+        ASSERT_TRUE(found);
+        EXPECT_NEAR(b.heuristicValue(next), 800.0 * g * rho - 0.1, 1e-9);
+        // off: no leaf value whatever the decay
+        const auto off = navScenario("random3d-2", {{"heuristic_decay", rho}});
+        EXPECT_EQ(asNav(*off).parts().model->heuristicValue(start), 0.0);
+    }
+
     TEST(NavigationModel, LightDarkHMinIsEight)
     {
         const auto scenario = navScenario("light-dark");

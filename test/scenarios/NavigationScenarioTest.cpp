@@ -66,6 +66,14 @@ namespace ropras::scenarios::test
             },
             {"obstacle_margin"});
         expectErrorMentions([] { navScenario("maze2d", {{"heuristic_value", 1}}); }, {"heuristic_value"});
+        expectErrorMentions([] { navScenario("maze2d", {{"heuristic_decay", 0.0}}); }, {"heuristic_decay", "> 0"});
+        expectErrorMentions(
+            [] {
+                navScenario("random3d-2", {{"heuristic_decay", 1.5}});
+            },
+            {"heuristic_decay", "(0, 1]"});
+        expectErrorMentions([] { navScenario("maze2d", {{"heuristic_decay", -0.99}}); }, {"heuristic_decay"});
+        expectErrorMentions([] { navScenario("maze2d", {{"heuristic_decay", "fast"}}); }, {"heuristic_decay"});
         // a start in collision with a wall
         expectErrorMentions(
             [] {

@@ -152,6 +152,11 @@ namespace ropras::scenarios
             r.fail("heuristic_value", "must be true or false, not " + heuristic.dump());
         }
         c.heuristicValue = heuristic.get<bool>();
+        c.heuristicDecay = r.positive("heuristic_decay");
+        if (c.heuristicDecay > 1.0)
+        {
+            r.fail("heuristic_decay", "= " + nlohmann::json(c.heuristicDecay).dump() + " must be in (0, 1]");
+        }
         const auto &evidence = r.at("termination_evidence");
         if (!evidence.is_boolean())
         {

@@ -136,7 +136,9 @@ namespace ropras::scenarios
         }
         const double g = config_.discount;
         const double gd = std::pow(g, static_cast<double>(d));
-        return config_.goalReward * gd + config_.stepReward * (1.0 - gd) / (1.0 - g);
+        const double rd =
+            config_.heuristicDecay == 1.0 ? 1.0 : std::pow(config_.heuristicDecay, static_cast<double>(d));
+        return config_.goalReward * gd * rd + config_.stepReward * (1.0 - gd) / (1.0 - g);
     }
 
     std::size_t NavigationModel::cellOf(const double *p) const noexcept

@@ -88,6 +88,9 @@ namespace ropras::scenarios
         /// "depletion_recovery": true = "observation" (NavigationRecovery), false = "ignore" (keep the particles)
         bool recoverFromObservation{false};
         bool heuristicValue{false};  ///< leaf value from the goal distance field (NavigationModel::heuristicValue)
+        /// per-step factor rho in (0, 1] on the goal reward of that leaf value: goal_reward (gamma rho)^d; 1 = the
+        /// discounted shortest path walked for certain, below 1 the farther goal is the less certain one
+        double heuristicDecay{1.0};
         /// the belief uses "the episode went on" as evidence (no particle stays in the goal or a danger zone);
         /// false = the paper's observation space R^n u {None} only
         bool terminationEvidence{false};

@@ -61,9 +61,10 @@ namespace ropras::scenarios
         void reinvigorate(State &s, pomdp::Rng &rng) const noexcept;
         bool reachedGoal(const State &s) const noexcept { return config_.goal.contains(s.p); }
         /** \brief With `heuristic_value` on: the value of walking the shortest danger-free lattice path of d
-            steps to the goal, goal_reward gamma^d + step_reward (1 - gamma^d) / (1 - gamma), d from a BFS
-            distance field (grid of step-length cells, the nearest cell); 0 when off or unreachable. Used by
-            the solvers at the leaves of the search (below the depth limit / at the end of a rollout). */
+            steps to the goal, goal_reward (gamma rho)^d + step_reward (1 - gamma^d) / (1 - gamma) (rho =
+            `heuristic_decay`, 1 by default), d from a BFS distance field (grid of step-length cells, the
+            nearest cell); 0 when off or unreachable. Used by the solvers at the leaves of the search (below
+            the depth limit / at the end of a rollout). */
         double heuristicValue(const State &s) const noexcept;
         /// BFS distance (steps) of the cell nearest \a p to the goal; -1 when unreachable or off
         long goalDistance(const double *p) const noexcept;
