@@ -353,7 +353,7 @@ namespace ropras::scenarios::test
         // the same steps, a smaller goal term: the difference is the goal reward's share rho^d takes away
         EXPECT_NEAR(a.heuristicValue(start) - b.heuristicValue(start),
                     800.0 * gd * (1.0 - std::pow(rho, static_cast<double>(d))), 1e-9);
-        // a cell next to the goal (d = 1) keeps rho of it, the goal cell all of it
+        // a cell next to the goal (d = 1) keeps the share rho of it
         NavState next = start;
         bool found = false;
         for (int i = -60; i <= 60 && !found; ++i)
