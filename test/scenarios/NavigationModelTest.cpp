@@ -273,11 +273,11 @@ namespace ropras::scenarios::test
     namespace
     {
         /** The distance field's leaf value d lattice steps from the goal, with Maze2D's and Random3D's rewards (goal
-            800, step -0.1): goal_reward·γ^d + step_reward·(1 − γ^d)/(1 − γ). */
-        double fieldValue(double g, std::size_t d)
+            800, step -0.1) and heuristic_decay rho: goal_reward·γ^d·rho^d + step_reward·(1 − γ^d)/(1 − γ). */
+        double fieldValue(double g, std::size_t d, double rho = 1.0)
         {
             const double gd = std::pow(g, static_cast<double>(d));
-            return 800.0 * gd - 0.1 * (1.0 - gd) / (1.0 - g);
+            return 800.0 * gd * std::pow(rho, static_cast<double>(d)) - 0.1 * (1.0 - gd) / (1.0 - g);
         }
     }  // namespace
 
@@ -347,28 +347,29 @@ namespace ropras::scenarios::test
         ASSERT_GT(d, 40);
         EXPECT_EQ(a.goalDistance(p), d);
         const double g = b.discount();
-        const double gd = std::pow(g, static_cast<double>(d));
-        const double expected = 800.0 * gd * std::pow(rho, static_cast<double>(d)) - 0.1 * (1.0 - gd) / (1.0 - g);
-        EXPECT_NEAR(b.heuristicValue(start), expected, 1e-9);
+        const auto steps = static_cast<std::size_t>(d);
+        EXPECT_NEAR(b.heuristicValue(start), fieldValue(g, steps, rho), 1e-9);
         // the same steps, a smaller goal term: the difference is the goal reward's share rho^d takes away
+        const double gd = std::pow(g, static_cast<double>(d));
         EXPECT_NEAR(a.heuristicValue(start) - b.heuristicValue(start),
                     800.0 * gd * (1.0 - std::pow(rho, static_cast<double>(d))), 1e-9);
-        // a cell next to the goal (d = 1) keeps the share rho of it
-        NavState next = start;
+        // a cell next to the goal (d = 1) keeps the share rho of it: walk out of the goal box along each axis
+        const auto &goal = b.config().goal;
+        const auto centre = goal.center();
         bool found = false;
-        for (int i = -60; i <= 60 && !found; ++i)
-            for (int j = -60; j <= 60 && !found; ++j)
-                for (int k = -60; k <= 60 && !found; ++k)
+        for (int k = 0; k < 3 && !found; ++k)
+            for (const double dir : {1.0, -1.0})
+            {
+                double q[3] = {centre[0], centre[1], centre[2]};
+                while (!found && goal.contains(q))
+                    q[k] += 0.5 * dir;
+                if (!found && b.goalDistance(q) == 1)
                 {
-                    const double q[3] = {p[0] + 0.5 * i, p[1] + 0.5 * j, p[2] + 0.5 * k};
-                    if (b.goalDistance(q) == 1)
-                    {
-                        next = at(q[0], q[1], q[2]);
-                        found = true;
-                    }
+                    EXPECT_NEAR(b.heuristicValue(at(q[0], q[1], q[2])), fieldValue(g, 1, rho), 1e-9);
+                    found = true;
                 }
+            }
         ASSERT_TRUE(found);
-        EXPECT_NEAR(b.heuristicValue(next), 800.0 * g * rho - 0.1, 1e-9);
         // off: no leaf value whatever the decay
         const auto off = navScenario("random3d-2", {{"heuristic_decay", rho}});
         EXPECT_EQ(asNav(*off).parts().model->heuristicValue(start), 0.0);
