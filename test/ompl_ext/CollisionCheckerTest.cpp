@@ -105,6 +105,72 @@ TEST(CollisionCheckerTest, PandaVerdictsMatchBruteForceInMbmScenes)
     EXPECT_LT(near, 15);
 }
 
+TEST(CollisionCheckerTest, ObstacleHitsAreTheEnvironmentPartOfTheVerdicts)
+{
+    // obstacleHitsBatch against a brute force over the obstacles only (reference centres + signedDistance, no self
+    // pairs): a hit is an obstacle contact; a configuration that only self-collides is invalid but not a hit. Rows
+    // out of their limits or not finite are hits. 1001 rows: full blocks and a last block of one row.
+    REQUIRE_SHARED();
+    const auto robot = loadRobot("panda");
+    const Environment env = loadPlanningScene(SHARED + "/mbm/panda/cage/scene0001.yaml");
+    const std::size_t dof = robot->dof(), count = 1001;
+    std::mt19937_64 rng(720);
+    std::vector<double> qs;
+    std::vector<double> obstacleMargin, fullMargin;
+    for (std::size_t k = 0; k < count; ++k)
+    {
+        auto q = randomConfig(*robot, rng);
+        if (k % 97 == 3)
+            q[k % dof] = k % 2 == 0 ? std::numeric_limits<double>::quiet_NaN() : robot->joints()[k % dof].upper + 1e-6;
+        qs.insert(qs.end(), q.begin(), q.end());
+        const std::vector<Eigen::Vector3d> c = robot->sphereCentersReference(q.data());
+        double m = std::numeric_limits<double>::infinity();
+        for (std::size_t s = 0; s < c.size(); ++s)
+            m = std::min(m, env.signedDistance(c[s], robot->spheres()[s].radius));
+        obstacleMargin.push_back(m);
+        fullMargin.push_back(referenceMargin(*robot, env, q.data()));
+    }
+    for (SimdBackend b : backends())
+    {
+        CollisionChecker checker(robot, b);
+        std::unique_ptr<bool[]> hit(new bool[count]), valid(new bool[count]);
+        const std::size_t nHit = checker.obstacleHitsBatch(env, qs.data(), count, hit.get());
+        checker.isValidBatch(env, qs.data(), count, valid.get());
+        EXPECT_EQ(nHit, static_cast<std::size_t>(std::count(hit.get(), hit.get() + count, true)));
+        int hits = 0, misses = 0, selfOnly = 0;
+        for (std::size_t k = 0; k < count; ++k)
+        {
+            if (hit[k])
+            {
+                EXPECT_FALSE(valid[k]) << "a hit is invalid, row " << k;
+            }
+            if (k % 97 == 3)
+            {
+                EXPECT_TRUE(hit[k]) << "bad row " << k;
+                continue;
+            }
+            if (std::abs(obstacleMargin[k]) < 1e-4 || std::abs(fullMargin[k]) < 1e-4)
+                continue;
+            EXPECT_EQ(hit[k], obstacleMargin[k] < 0.0) << "row " << k << " obstacle margin " << obstacleMargin[k];
+            (hit[k] ? hits : misses) += 1;
+            if (obstacleMargin[k] > 0.0 && fullMargin[k] < 0.0)
+            {
+                ++selfOnly;
+                EXPECT_FALSE(valid[k]) << "row " << k << " self-collides";
+                // the single-row path too (a block of one)
+                bool one = true;
+                EXPECT_EQ(checker.obstacleHitsBatch(env, qs.data() + k * dof, 1, &one), 0u);
+                EXPECT_FALSE(one);
+            }
+        }
+        std::cout << "cage scene0001, " << simdBackendName(b) << ": " << hits << " hits, " << misses << " misses, "
+                  << selfOnly << " only self-colliding\n";
+        EXPECT_GT(hits, 100);
+        EXPECT_GT(misses, 100);
+        EXPECT_GT(selfOnly, 20) << "random configurations must include some that only self-collide";
+    }
+}
+
 TEST(CollisionCheckerTest, NanAndOutOfLimitConfigurationsAreInvalid)
 {
     REQUIRE_SHARED();

@@ -225,11 +225,12 @@ TEST(VectorizedRRTConnect, EveryTreeEdgeIsAtMostRangeAndValid)
     // Extensions take one step of range, connections ceil(d / range) equal steps: no edge of either tree is longer
     // than range, every edge is a valid motion, and the solution path (tree edges only) is valid.
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
-    // the balancing and connection variants too: VAMP's tree ratio, connections outside the dynamic domain
-    std::vector<unsigned> vertices[3];
-    const std::pair<std::string, std::string> variants[3] = {
-        {"tree_ratio", "0"}, {"tree_ratio", "1"}, {"dd_connect", "0"}};
-    for (int variant = 0; variant < 3; ++variant)
+    // the balancing and connection variants too: VAMP's tree ratio, connections outside the dynamic domain, and the
+    // extension ends batched from the first sample on (no failure needed first)
+    std::vector<unsigned> vertices[4];
+    const std::pair<std::string, std::string> variants[4] = {
+        {"tree_ratio", "0"}, {"tree_ratio", "1"}, {"dd_connect", "0"}, {"batch_after", "0"}};
+    for (int variant = 0; variant < 4; ++variant)
         for (const char *range : {"0.07", "0.15", "0.4"})
             for (const char *seed : {"3", "17"})
             {
@@ -258,4 +259,31 @@ TEST(VectorizedRRTConnect, EveryTreeEdgeIsAtMostRangeAndValid)
     // VAMP's balancing rule grows other trees than the default (dd_connect changes nothing in this open plane: its
     // connections do not fail)
     EXPECT_NE(vertices[1], vertices[0]);
+    // batched ends grow their queued extensions from the nodes chosen when queued: other trees
+    EXPECT_NE(vertices[3], vertices[0]);
+}
+
+TEST(VectorizedRRTConnect, BatchedEndsOnlyAfterTheirThresholdOfFailures)
+{
+    // Until batch_after extensions have failed, every extension is checked on its own: with a threshold no solve
+    // reaches, the trees are those of batch_ends = 0; with batching from the start they differ, and every path is
+    // valid either way.
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    for (const char *seed : {"3", "17", "29"})
+    {
+        std::vector<double> paths[3];
+        const std::map<std::string, std::string> settings[3] = {
+            {{"batch_ends", "0"}}, {{"batch_after", "1000000"}}, {{"batch_after", "0"}}};
+        for (int k = 0; k < 3; ++k)
+        {
+            std::map<std::string, std::string> params = settings[k];
+            params.insert({{"seed", seed}, {"range", "0.07"}, {"direct", "0"}, {"max_samples", "100000"}});
+            PlanningContext c = pointContext(true, params);
+            ASSERT_EQ(solve(c, 10.0), ompl::base::PlannerStatus::EXACT_SOLUTION) << "seed " << seed << " setting " << k;
+            EXPECT_TRUE(c.setup->getSolutionPath().check());
+            paths[k] = pathValues(c);
+        }
+        EXPECT_EQ(paths[1], paths[0]) << "seed " << seed;
+        EXPECT_NE(paths[2], paths[0]) << "seed " << seed;
+    }
 }

@@ -73,8 +73,9 @@ namespace ropras::ompl_ext
                 return true;
             }
 
+            /// \a self false: the robot's self pairs are not tested (CollisionChecker::obstacleHitsBatch)
             static std::size_t isValidBatch(const KinematicProgram &p, const Environment &env, const double *qs,
-                                            std::size_t count, bool *valid) noexcept
+                                            std::size_t count, bool *valid, bool self = true) noexcept
             {
                 const auto dof = static_cast<std::size_t>(p.dof);
                 float *buf = threadScratch(std::max(p.batch.total, p.single.total));
@@ -82,7 +83,7 @@ namespace ropras::ompl_ext
                 for (std::size_t start = 0; start < count; start += WIDTH)
                 {
                     const std::size_t n = std::min<std::size_t>(WIDTH, count - start);
-                    if (n == 1)
+                    if (n == 1 && self)
                     {
                         const double *q = qs + start * dof;
                         valid[start] = withinLimits(p, q) && K::validSingle(p, env, q, buf);
@@ -94,7 +95,7 @@ namespace ropras::ompl_ext
                         // every row finite, within its limits and with angles in the float range: no fix-ups
                         K::framesBatch(p, buf);
                         constexpr unsigned all = (1u << WIDTH) - 1u;
-                        const unsigned ok = all & ~K::collideBatch(p, env, buf, all, false);
+                        const unsigned ok = all & ~K::collideBatch(p, env, buf, all, false, self);
                         for (std::size_t i = 0; i < n; ++i)
                         {
                             valid[start + i] = ((ok >> i) & 1u) != 0u;
@@ -125,7 +126,7 @@ namespace ropras::ompl_ext
                         putLane(p, qs + row * dof, i, buf + p.batch.q);
                     }
                     K::framesBatch(p, buf);
-                    const unsigned ok = active & ~K::collideBatch(p, env, buf, active, false);
+                    const unsigned ok = active & ~K::collideBatch(p, env, buf, active, false, self);
                     for (std::size_t i = 0; i < n; ++i)
                     {
                         valid[start + i] = ((ok >> i) & 1u) != 0u;
@@ -404,6 +405,15 @@ namespace ropras::ompl_ext
                                                bool *valid) const noexcept
     {
         return ROPRAS_DISPATCH(isValidBatch(program_->kp, env, qs, count, valid));
+    }
+
+    std::size_t CollisionChecker::obstacleHitsBatch(const Environment &env, const double *qs, std::size_t count,
+                                                    bool *hit) const noexcept
+    {
+        const std::size_t clear = ROPRAS_DISPATCH(isValidBatch(program_->kp, env, qs, count, hit, false));
+        for (std::size_t i = 0; i < count; ++i)
+            hit[i] = !hit[i];
+        return count - clear;
     }
 
     bool CollisionChecker::allValid(const Environment &env, const double *qs, std::size_t count) const noexcept

@@ -58,6 +58,10 @@ namespace ropras::ompl_ext
                                       &VectorizedRRTConnect::getTreeRatio, "0.:0.1:10.");
         Planner::declareParam<bool>("direct", this, &VectorizedRRTConnect::setDirectConnection,
                                     &VectorizedRRTConnect::getDirectConnection, "0,1");
+        Planner::declareParam<bool>("batch_ends", this, &VectorizedRRTConnect::setBatchEnds,
+                                    &VectorizedRRTConnect::getBatchEnds, "0,1");
+        Planner::declareParam<unsigned>("batch_after", this, &VectorizedRRTConnect::setBatchAfter,
+                                        &VectorizedRRTConnect::getBatchAfter, "0:1:1000000");
         Planner::declareParam<unsigned>("max_samples", this, &VectorizedRRTConnect::setMaxSamples,
                                         &VectorizedRRTConnect::getMaxSamples, "0:1:1000000");
         Planner::declareParam<unsigned>("seed", this, &VectorizedRRTConnect::setSeed, &VectorizedRRTConnect::getSeed,
@@ -101,6 +105,8 @@ namespace ropras::ompl_ext
         // (padding: shift, lower and width 0, so padded lanes compute 0)
         dofPadded_ = (dof_ + 3) / 4 * 4;
         scratch_.assign(3 * dofPadded_, 0.0);
+        pendingQ_.assign(BATCH_ENDS * dof_, 0.0);
+        pendingCount_ = 0;
         sampleF_.assign(dofPadded_, 0.0f);
         lowerPadded_.assign(dofPadded_, 0.0);
         widthPadded_.assign(dofPadded_, 0.0);
@@ -170,6 +176,7 @@ namespace ropras::ompl_ext
             tree.parent.clear();
             tree.radius.clear();
         }
+        pendingCount_ = 0;
         // The Halton sequence continues across queries (a retry after clear() draws new samples).
     }
 
@@ -205,7 +212,7 @@ namespace ropras::ompl_ext
         }
         // Dynamic domain: most samples lie clearly outside their nearest node's radius. Beyond r^2 plus a bound on
         // the float rounding (floatSlack_, from the joint bounds) the double test would reject too: skip computing
-        // it. Closer calls (and every accepted sample) take the exact test in extend().
+        // it. Closer calls (and every accepted sample) take the exact test in propose().
         rejected = false;
         if (domain)
         {
@@ -270,21 +277,18 @@ namespace ropras::ompl_ext
             outF[k] = static_cast<float>(out[k]);
     }
 
-    int VectorizedRRTConnect::extend(Tree &tree, const double *target, bool &reached, int fromNode,
-                                     const float *targetF, bool connect)
+    bool VectorizedRRTConnect::propose(Tree &tree, const double *target, int fromNode, const float *targetF,
+                                       bool connect, std::size_t &near, double *to, bool &reached) const
     {
         double distSq;
-        std::size_t near;
         const bool domain = dynamicDomain_ && (!connect || ddConnect_);
+        reached = false;
         if (fromNode < 0)
         {
             bool rejected;
             near = nearest(tree, target, targetF, distSq, rejected, domain);
             if (rejected)
-            {
-                reached = false;
-                return -1;
-            }
+                return false;
         }
         else
         {
@@ -295,11 +299,9 @@ namespace ropras::ompl_ext
                 distSq += (node[k] - target[k]) * (node[k] - target[k]);
         }
         const double dist = std::sqrt(distSq);
-        reached = false;
         if (domain && fromNode < 0 && dist > tree.radius[near])
-            return -1;
+            return false;
         const double *from = tree.q.data() + near * dof_;
-        double *to = scratch_.data();
         if (dist <= range_)
         {
             std::copy(target, target + dof_, to);
@@ -313,19 +315,73 @@ namespace ropras::ompl_ext
             for (std::size_t k = 0; k < dof_; ++k)
                 to[k] = from[k] + f * (target[k] - from[k]);
         }
-        if (!motionValid(from, to))
+        return true;
+    }
+
+    int VectorizedRRTConnect::grow(Tree &tree, std::size_t near, const double *to, bool connect, bool endValid)
+    {
+        const bool domain = dynamicDomain_ && (!connect || ddConnect_);
+        if (!endValid || !motionValid(tree.q.data() + near * dof_, to))
         {
             if (domain)
                 tree.radius[near] = std::isinf(tree.radius[near])
                                         ? ddRadius_
                                         : std::max(tree.radius[near] * (1.0 - ddAlpha_), ddMinRadius_);
-            reached = false;
             return -1;
         }
         if (domain && !std::isinf(tree.radius[near]))
             tree.radius[near] *= (1.0 + ddAlpha_);
         addNode(tree, to, static_cast<int>(near));
         return static_cast<int>(tree.size() - 1);
+    }
+
+    int VectorizedRRTConnect::connect(Tree &tree, const double *target)
+    {
+        double *to = scratch_.data();
+        int last = -1;
+        while (true)
+        {
+            // after the first step, continue from the node just added (the target lies straight ahead)
+            std::size_t near;
+            bool reached;
+            if (!propose(tree, target, last, nullptr, true, near, to, reached))
+                return -1;
+            last = grow(tree, near, to, true, true);
+            if (last < 0)
+                return -1;
+            if (reached)
+                return last;
+        }
+    }
+
+    int VectorizedRRTConnect::growAndConnect(int a, std::size_t near, const double *to, bool endValid)
+    {
+        Tree &ta = trees_[a];
+        Tree &tb = trees_[1 - a];
+        const int added = grow(ta, near, to, false, endValid);
+        if (added < 0)
+            return -1;
+        // Connect: grow the other tree toward the new node in steps of range_.
+        double *target = scratch_.data() + 2 * dofPadded_;
+        std::copy(ta.q.data() + added * dof_, ta.q.data() + (added + 1) * dof_, target);
+        const int last = connect(tb, target);
+        if (last < 0)
+            return 0;
+        // tb's last node equals ta's new node; join through tb's parent of it.
+        buildSolution(added, tb.parent[last], a == 0);
+        return 1;
+    }
+
+    bool VectorizedRRTConnect::growPending()
+    {
+        const std::size_t count = pendingCount_;
+        pendingCount_ = 0;
+        ++motionChecks_;  // the batch of ends: a unit of work like a motion check
+        checker_->obstacleHitsBatch(*environment_, pendingQ_.data(), count, pendingHit_);
+        for (std::size_t i = 0; i < count; ++i)
+            if (growAndConnect(pending_[i].tree, pending_[i].near, pendingQ_.data() + i * dof_, !pendingHit_[i]) > 0)
+                return true;
+        return false;
     }
 
     void VectorizedRRTConnect::buildSolution(int nodeA, int nodeB, bool aIsStartTree)
@@ -377,13 +433,14 @@ namespace ropras::ompl_ext
         environment_ = roprasValidator_ != nullptr ? roprasValidator_->environment().get() : nullptr;
         resolution_ = roprasValidator_ != nullptr ? roprasValidator_->resolution() : resolution_;
 
+        pendingCount_ = 0;  // extensions queued when the last solve stopped refer to its trees
+        failedExtensions_ = 0;
         while (const ompl::base::State *st = pis_.nextStart())
             addNode(trees_[0], values(st), -1);
         if (trees_[0].size() == 0)
             return ompl::base::PlannerStatus::INVALID_START;
 
         double *sampleBuf = scratch_.data() + dofPadded_;
-        double *targetBuf = scratch_.data() + 2 * dofPadded_;
         int a = 0;  // tree being extended this iteration
         unsigned samples = 0;
         bool directTried = !direct_;
@@ -437,36 +494,31 @@ namespace ropras::ompl_ext
                 if (std::abs(last - other) / last < treeRatio_)
                     a = 1 - a;
             }
-            Tree &ta = trees_[a];
-            Tree &tb = trees_[1 - a];
             sample(sampleBuf, sampleF_.data());
             bool reached;
-            const int added = extend(ta, sampleBuf, reached, -1, sampleF_.data());
-            if (added >= 0)
+            if (batchEnds_ && checker_ != nullptr && failedExtensions_ >= batchAfter_)
             {
-                // Connect: grow the other tree toward the new node in steps of range_.
-                std::copy(ta.q.data() + added * dof_, ta.q.data() + (added + 1) * dof_, targetBuf);
-                int last = -1;
-                bool connected = false;
-                while (true)
+                // the extension's end is queued; a full queue checks its ends in one batch, then grows each
+                // queued extension in order (setBatchEnds)
+                Pending &next = pending_[pendingCount_];
+                double *to = pendingQ_.data() + pendingCount_ * dof_;
+                if (propose(trees_[a], sampleBuf, -1, sampleF_.data(), false, next.near, to, reached))
                 {
-                    bool hit;
-                    // after the first step, continue from the node just added (the target lies straight ahead)
-                    const int node = extend(tb, targetBuf, hit, last, nullptr, true);
-                    if (node < 0)
-                        break;
-                    last = node;
-                    if (hit)
-                    {
-                        connected = true;
-                        break;
-                    }
+                    next.tree = a;
+                    if (++pendingCount_ == BATCH_ENDS && growPending())
+                        return ompl::base::PlannerStatus::EXACT_SOLUTION;
                 }
-                if (connected)
+            }
+            else
+            {
+                std::size_t near;
+                double *to = scratch_.data();
+                if (propose(trees_[a], sampleBuf, -1, sampleF_.data(), false, near, to, reached))
                 {
-                    // tb's last node equals ta's new node; join through tb's parent of it.
-                    buildSolution(added, tb.parent[last], a == 0);
-                    return ompl::base::PlannerStatus::EXACT_SOLUTION;
+                    const int grown = growAndConnect(a, near, to, true);
+                    if (grown > 0)
+                        return ompl::base::PlannerStatus::EXACT_SOLUTION;
+                    failedExtensions_ += grown < 0 ? 1u : 0u;
                 }
             }
             if (!balance_)

@@ -280,9 +280,10 @@ namespace ropras::ompl_ext::simd
         }
 
         /** \brief Collision lanes of a batch after framesBatch. \a active: lanes to check (bits); stops as soon
-            as every active lane collides, or at the first collision when \a stopOnAny. */
+            as every active lane collides, or at the first collision when \a stopOnAny. Without \a self, the
+            robot's self pairs are not tested (obstacles and attached bodies only). */
         static unsigned collideBatch(const KinematicProgram &p, const Environment &env, float *buf, unsigned active,
-                                     bool stopOnAny) noexcept
+                                     bool stopOnAny, bool self = true) noexcept
         {
             Placed placed;
             if (p.links.size() > 64)
@@ -355,7 +356,8 @@ namespace ropras::ompl_ext::simd
                 if (done())
                     return hit;
             }
-            hit |= selfBatch(p, buf, placed, groups, active & ~hit, stopOnAny);
+            if (self)
+                hit |= selfBatch(p, buf, placed, groups, active & ~hit, stopOnAny);
             return hit;
         }
     };

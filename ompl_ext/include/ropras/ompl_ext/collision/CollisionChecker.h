@@ -50,6 +50,13 @@ namespace ropras::ompl_ext
         /// \a count configurations, row-major (count x dof()); writes one verdict each; returns the number valid
         std::size_t isValidBatch(const Environment &env, const double *qs, std::size_t count,
                                  bool *valid) const noexcept;
+        /** \brief The part of isValidBatch without the robot's self-collision pairs: \a hit[i] is true when
+            configuration i is outside its joint limits (or not finite), or touches an obstacle, or an attached body
+            collides. A configuration that hits is invalid; one that does not may still self-collide (isValidBatch
+            decides). A cheaper filter where invalid configurations are the common case (VectorizedRRTConnect's
+            batched extension ends). Returns the number that hit. */
+        std::size_t obstacleHitsBatch(const Environment &env, const double *qs, std::size_t count,
+                                      bool *hit) const noexcept;
         /** \brief True when all \a count configurations (row-major, count x dof()) are valid. Faster than
             isValidBatch when the answer may be false: it stops at the first block of width() rows in which any
             configuration collides (the query VAMP's block check answers). Empty input: true. */

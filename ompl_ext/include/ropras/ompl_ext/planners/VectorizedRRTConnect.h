@@ -36,7 +36,10 @@ namespace ropras::ompl_ext
           the remaining distance; no short last step), from its nearest node first and then from each node it
           just added (no nearest-neighbour search per step);
         - direct connection: before growing any tree, the straight start-goal motion is checked once
-          (`direct`); a raked check of an invalid motion usually fails within its first batches.
+          (`direct`); a raked check of an invalid motion usually fails within its first batches;
+        - batched extension ends (ropras' own, not VAMP's): once `batch_after` extensions toward samples have
+          failed in a solve, the ends of BATCH_ENDS extensions are checked in one SIMD batch first and only those
+          clear of the obstacles get a motion check (`batch_ends`, `batch_after`; setBatchEnds).
         Nearest neighbours: a linear scan over a float copy of the nodes, laid out in blocks of 8 (one SIMD
         register per joint), reduced in registers, then the exact distance to the winner in double (trees stay
         small at the median).
@@ -99,6 +102,19 @@ namespace ropras::ompl_ext
         bool getDynamicDomainConnect() const { return ddConnect_; }
         void setDirectConnection(bool on) { direct_ = on; }
         bool getDirectConnection() const { return direct_; }
+        /** \brief Batched extension ends (parameter "batch_ends", default on; only with ropras' validator): once
+            batch_after extensions have failed, the end configurations of BATCH_ENDS extensions toward samples are
+            checked against the obstacles in one SIMD batch (CollisionChecker::obstacleHitsBatch) before any of their
+            motions, and an extension whose end hits fails without its motion check. On cluttered problems most
+            extensions fail and most failing ones end in collision (doc/benchmarks.md): one batch of ends replaces
+            most of their motion checks. The queued extensions then grow in order; a node added meanwhile is not
+            their nearest (they keep the node chosen when queued). Off: the trees of earlier versions. */
+        void setBatchEnds(bool on) { batchEnds_ = on; }
+        bool getBatchEnds() const { return batchEnds_; }
+        /// failed extensions toward samples in a solve before its ends are batched (parameter "batch_after"):
+        /// until then each extension is checked on its own, so an easy problem is not held back by the queue
+        void setBatchAfter(unsigned n) { batchAfter_ = n; }
+        unsigned getBatchAfter() const { return batchAfter_; }
         void setMaxSamples(unsigned n) { maxSamples_ = n; }
         unsigned getMaxSamples() const { return maxSamples_; }
         /** \brief Seed of the Halton shift (parameter "seed"): 0 (default) draws the shift from OMPL's RNG at
@@ -127,12 +143,24 @@ namespace ropras::ompl_ext
         void addNode(Tree &tree, const double *q, int parent);
         /// the next sample into \a out and, in float, into \a outF (for the nearest-neighbour scan)
         void sample(double *out, float *outF);
-        /// extends \a tree toward \a target by at most range_ from its nearest node (or from \a fromNode when
-        /// >= 0, without the dynamic-domain test); returns the new node index or -1. \a targetF: the target in
-        /// float, or nullptr. \a connect: a connection step, the remaining distance d in ceil(d / range_) equal
-        /// steps (an extension toward a sample takes one step of range_)
-        int extend(Tree &tree, const double *target, bool &reached, int fromNode = -1, const float *targetF = nullptr,
-                   bool connect = false);
+        /** \brief The extension of \a tree toward \a target by at most range_ from its nearest node (or from
+            \a fromNode when >= 0, without the dynamic-domain test): the node \a near to grow from and the end \a to
+            (dof_ values); \a reached: the end is the target. False when the dynamic domain rejects the target.
+            \a targetF: the target in float, or nullptr. \a connect: a connection step, the remaining distance d in
+            ceil(d / range_) equal steps (an extension toward a sample takes one step of range_) */
+        bool propose(Tree &tree, const double *target, int fromNode, const float *targetF, bool connect,
+                     std::size_t &near, double *to, bool &reached) const;
+        /// checks the motion near -> to (not when \a endValid is false: the end is known to collide), updates the
+        /// node's dynamic-domain radius, adds the node; returns its index or -1
+        int grow(Tree &tree, std::size_t near, const double *to, bool connect, bool endValid);
+        /// the connection of \a tree toward \a target; returns the node equal to \a target or -1
+        int connect(Tree &tree, const double *target);
+        /// grows tree \a a by near -> to (grow), then connects the other tree to the new node: 1 when a solution
+        /// was built, 0 when grown only, -1 when the extension failed
+        int growAndConnect(int a, std::size_t near, const double *to, bool endValid);
+        /// checks the queued ends in one batch (obstacleHitsBatch), then grows the queued extensions in order
+        /// (growAndConnect); true when a solution was built
+        bool growPending();
         void buildSolution(int startNode, int goalNode, bool startTreeIsA);
         /// reserves room for \a nodes nodes in both trees
         void reserveTrees(std::size_t nodes);
@@ -167,6 +195,20 @@ namespace ropras::ompl_ext
         std::uint64_t motionChecks_{0};  ///< motion checks so far (8 units of work between two PTC evaluations)
         unsigned maxSamples_{0};         ///< 0: unlimited (until the termination condition)
         unsigned seed_{0};               ///< 0: Halton shift from OMPL's RNG
+        /// extensions whose ends are checked in one batch (setBatchEnds)
+        static constexpr std::size_t BATCH_ENDS = 8;
+        struct Pending
+        {
+            int tree{0};
+            std::size_t near{0};
+        };
+        bool batchEnds_{true};
+        unsigned batchAfter_{32};
+        unsigned failedExtensions_{0};  ///< in this solve (toward samples)
+        Pending pending_[BATCH_ENDS];
+        bool pendingHit_[BATCH_ENDS]{};  ///< the queued ends that hit an obstacle
+        std::vector<double> pendingQ_;   ///< the queued ends, BATCH_ENDS x dof_ (sized in setup())
+        std::size_t pendingCount_{0};
     };
 }  // namespace ropras::ompl_ext
 
