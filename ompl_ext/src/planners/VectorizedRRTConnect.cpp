@@ -277,7 +277,7 @@ namespace ropras::ompl_ext
             outF[k] = static_cast<float>(out[k]);
     }
 
-    bool VectorizedRRTConnect::propose(Tree &tree, const double *target, int fromNode, const float *targetF,
+    bool VectorizedRRTConnect::propose(const Tree &tree, const double *target, int fromNode, const float *targetF,
                                        bool connect, std::size_t &near, double *to, bool &reached) const
     {
         double distSq;

@@ -148,7 +148,7 @@ namespace ropras::ompl_ext
             (dof_ values); \a reached: the end is the target. False when the dynamic domain rejects the target.
             \a targetF: the target in float, or nullptr. \a connect: a connection step, the remaining distance d in
             ceil(d / range_) equal steps (an extension toward a sample takes one step of range_) */
-        bool propose(Tree &tree, const double *target, int fromNode, const float *targetF, bool connect,
+        bool propose(const Tree &tree, const double *target, int fromNode, const float *targetF, bool connect,
                      std::size_t &near, double *to, bool &reached) const;
         /// checks the motion near -> to (not when \a endValid is false: the end is known to collide), updates the
         /// node's dynamic-domain radius, adds the node; returns its index or -1
