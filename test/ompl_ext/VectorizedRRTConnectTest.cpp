@@ -266,15 +266,19 @@ TEST(VectorizedRRTConnect, EveryTreeEdgeIsAtMostRangeAndValid)
 TEST(VectorizedRRTConnect, BatchedEndsOnlyAfterTheirThresholdOfFailures)
 {
     // Until batch_after extensions have failed, every extension is checked on its own: with a threshold no solve
-    // reaches, the trees are those of batch_ends = 0; with batching from the start they differ, and every path is
-    // valid either way.
+    // reaches, the trees are those of batch_ends = 0 and no batch of ends is checked; with batching from the start,
+    // or after 4 failures, batches reject ends that hit the wall (counted by the progress properties), the trees
+    // differ, and every path is valid.
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    const auto property = [](PlanningContext &c, const std::string &name)
+    { return std::stoull(c.setup->getPlanner()->getPlannerProgressProperties().at(name + " INTEGER")()); };
     for (const char *seed : {"3", "17", "29"})
     {
-        std::vector<double> paths[3];
-        const std::map<std::string, std::string> settings[3] = {
-            {{"batch_ends", "0"}}, {{"batch_after", "1000000"}}, {{"batch_after", "0"}}};
-        for (int k = 0; k < 3; ++k)
+        std::vector<double> paths[4];
+        unsigned long long batches[4], rejected[4];
+        const std::map<std::string, std::string> settings[4] = {
+            {{"batch_ends", "0"}}, {{"batch_after", "1000000"}}, {{"batch_after", "0"}}, {{"batch_after", "4"}}};
+        for (int k = 0; k < 4; ++k)
         {
             std::map<std::string, std::string> params = settings[k];
             params.insert({{"seed", seed}, {"range", "0.07"}, {"direct", "0"}, {"max_samples", "100000"}});
@@ -282,8 +286,20 @@ TEST(VectorizedRRTConnect, BatchedEndsOnlyAfterTheirThresholdOfFailures)
             ASSERT_EQ(solve(c, 10.0), ompl::base::PlannerStatus::EXACT_SOLUTION) << "seed " << seed << " setting " << k;
             EXPECT_TRUE(c.setup->getSolutionPath().check());
             paths[k] = pathValues(c);
+            batches[k] = property(c, "end batches");
+            rejected[k] = property(c, "ends rejected");
+            EXPECT_GT(property(c, "motion checks"), 0u);
         }
         EXPECT_EQ(paths[1], paths[0]) << "seed " << seed;
-        EXPECT_NE(paths[2], paths[0]) << "seed " << seed;
+        EXPECT_EQ(batches[0], 0u);
+        EXPECT_EQ(batches[1], 0u);
+        EXPECT_EQ(rejected[1], 0u);
+        for (int k : {2, 3})
+        {
+            EXPECT_NE(paths[k], paths[0]) << "seed " << seed << " setting " << k;
+            EXPECT_GT(batches[k], 0u) << "seed " << seed << " setting " << k;
+            EXPECT_GT(rejected[k], 0u) << "ends in the wall are rejected by the batch, seed " << seed;
+            EXPECT_LE(rejected[k], 8 * batches[k]);
+        }
     }
 }

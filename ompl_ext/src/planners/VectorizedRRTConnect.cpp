@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #if defined(__AVX2__) && defined(__FMA__)
 #include <immintrin.h>
 #endif
@@ -62,6 +63,9 @@ namespace ropras::ompl_ext
                                     &VectorizedRRTConnect::getBatchEnds, "0,1");
         Planner::declareParam<unsigned>("batch_after", this, &VectorizedRRTConnect::setBatchAfter,
                                         &VectorizedRRTConnect::getBatchAfter, "0:1:1000000");
+        addPlannerProgressProperty("motion checks INTEGER", [this] { return std::to_string(motionChecks_); });
+        addPlannerProgressProperty("end batches INTEGER", [this] { return std::to_string(endBatches_); });
+        addPlannerProgressProperty("ends rejected INTEGER", [this] { return std::to_string(endsRejected_); });
         Planner::declareParam<unsigned>("max_samples", this, &VectorizedRRTConnect::setMaxSamples,
                                         &VectorizedRRTConnect::getMaxSamples, "0:1:1000000");
         Planner::declareParam<unsigned>("seed", this, &VectorizedRRTConnect::setSeed, &VectorizedRRTConnect::getSeed,
@@ -376,8 +380,8 @@ namespace ropras::ompl_ext
     {
         const std::size_t count = pendingCount_;
         pendingCount_ = 0;
-        ++motionChecks_;  // the batch of ends: a unit of work like a motion check
-        checker_->obstacleHitsBatch(*environment_, pendingQ_.data(), count, pendingHit_);
+        ++endBatches_;
+        endsRejected_ += checker_->obstacleHitsBatch(*environment_, pendingQ_.data(), count, pendingHit_);
         for (std::size_t i = 0; i < count; ++i)
             if (growAndConnect(pending_[i].tree, pending_[i].near, pendingQ_.data() + i * dof_, !pendingHit_[i]) > 0)
                 return true;
@@ -448,12 +452,12 @@ namespace ropras::ompl_ext
         // solution, as in bench-mbm): evaluate it before the first iteration and then once per 32 units of work, a
         // motion check counting 8 and an iteration 1, i.e. after at most 4 motion checks (a few us) or 32 samples
         // the dynamic domain rejected without any check.
-        std::uint64_t checksSeen = motionChecks_;
+        std::uint64_t checksSeen = motionChecks_ + endBatches_;  // a batch of ends counts like a motion check
         std::uint64_t work = 32;
         while (true)
         {
-            work += 1 + 8 * (motionChecks_ - checksSeen);
-            checksSeen = motionChecks_;
+            work += 1 + 8 * (motionChecks_ + endBatches_ - checksSeen);
+            checksSeen = motionChecks_ + endBatches_;
             if (work >= 32)
             {
                 if (ptc)

@@ -107,8 +107,13 @@ namespace ropras::ompl_ext
             checked against the obstacles in one SIMD batch (CollisionChecker::obstacleHitsBatch) before any of their
             motions, and an extension whose end hits fails without its motion check. On cluttered problems most
             extensions fail and most failing ones end in collision (doc/benchmarks.md): one batch of ends replaces
-            most of their motion checks. The queued extensions then grow in order; a node added meanwhile is not
-            their nearest (they keep the node chosen when queued). Off: the trees of earlier versions. */
+            most of their motion checks. The queued extensions then grow in order from the nodes chosen when queued:
+            a node added meanwhile is not their nearest, and a node whose dynamic-domain radius shrank meanwhile is
+            not tested again. The tree to extend is chosen when queuing (with balance and tree_ratio 0, the 8 go to
+            the same tree, the smaller one then). When the termination condition or max_samples ends a solve, a
+            partly filled queue is dropped (up to 7 samples counted but not checked). Off: the trees of earlier
+            versions. Progress properties "motion checks", "end batches" and "ends rejected" count since
+            construction. */
         void setBatchEnds(bool on) { batchEnds_ = on; }
         bool getBatchEnds() const { return batchEnds_; }
         /// failed extensions toward samples in a solve before its ends are batched (parameter "batch_after"):
@@ -192,9 +197,11 @@ namespace ropras::ompl_ext
         bool direct_{true};
         bool ddConnect_{true};
         double treeRatio_{0.0};
-        std::uint64_t motionChecks_{0};  ///< motion checks so far (8 units of work between two PTC evaluations)
-        unsigned maxSamples_{0};         ///< 0: unlimited (until the termination condition)
-        unsigned seed_{0};               ///< 0: Halton shift from OMPL's RNG
+        /// since construction (progress properties): motion checks, batches of ends, ends rejected by a batch; a
+        /// motion check or a batch is 8 units of work between two PTC evaluations
+        std::uint64_t motionChecks_{0}, endBatches_{0}, endsRejected_{0};
+        unsigned maxSamples_{0};  ///< 0: unlimited (until the termination condition)
+        unsigned seed_{0};        ///< 0: Halton shift from OMPL's RNG
         /// extensions whose ends are checked in one batch (setBatchEnds)
         static constexpr std::size_t BATCH_ENDS = 8;
         struct Pending
