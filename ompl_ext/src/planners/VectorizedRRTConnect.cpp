@@ -388,6 +388,29 @@ namespace ropras::ompl_ext
         return false;
     }
 
+    bool VectorizedRRTConnect::extendTowardSample(int a, const double *sample)
+    {
+        bool reached;
+        if (batchEnds_ && checker_ != nullptr && failedExtensions_ >= batchAfter_)
+        {
+            // the extension's end is queued; a full queue checks its ends in one batch, then grows each queued
+            // extension in order (setBatchEnds)
+            Pending &next = pending_[pendingCount_];
+            double *to = pendingQ_.data() + pendingCount_ * dof_;
+            if (!propose(trees_[a], sample, -1, sampleF_.data(), false, next.near, to, reached))
+                return false;
+            next.tree = a;
+            return ++pendingCount_ == BATCH_ENDS && growPending();
+        }
+        std::size_t near;
+        double *to = scratch_.data();
+        if (!propose(trees_[a], sample, -1, sampleF_.data(), false, near, to, reached))
+            return false;
+        const int grown = growAndConnect(a, near, to, true);
+        failedExtensions_ += grown < 0 ? 1u : 0u;
+        return grown > 0;
+    }
+
     void VectorizedRRTConnect::buildSolution(int nodeA, int nodeB, bool aIsStartTree)
     {
         const Tree &startTree = trees_[0], &goalTree = trees_[1];
@@ -499,32 +522,8 @@ namespace ropras::ompl_ext
                     a = 1 - a;
             }
             sample(sampleBuf, sampleF_.data());
-            bool reached;
-            if (batchEnds_ && checker_ != nullptr && failedExtensions_ >= batchAfter_)
-            {
-                // the extension's end is queued; a full queue checks its ends in one batch, then grows each
-                // queued extension in order (setBatchEnds)
-                Pending &next = pending_[pendingCount_];
-                double *to = pendingQ_.data() + pendingCount_ * dof_;
-                if (propose(trees_[a], sampleBuf, -1, sampleF_.data(), false, next.near, to, reached))
-                {
-                    next.tree = a;
-                    if (++pendingCount_ == BATCH_ENDS && growPending())
-                        return ompl::base::PlannerStatus::EXACT_SOLUTION;
-                }
-            }
-            else
-            {
-                std::size_t near;
-                double *to = scratch_.data();
-                if (propose(trees_[a], sampleBuf, -1, sampleF_.data(), false, near, to, reached))
-                {
-                    const int grown = growAndConnect(a, near, to, true);
-                    if (grown > 0)
-                        return ompl::base::PlannerStatus::EXACT_SOLUTION;
-                    failedExtensions_ += grown < 0 ? 1u : 0u;
-                }
-            }
+            if (extendTowardSample(a, sampleBuf))
+                return ompl::base::PlannerStatus::EXACT_SOLUTION;
             if (!balance_)
                 a = 1 - a;
         }

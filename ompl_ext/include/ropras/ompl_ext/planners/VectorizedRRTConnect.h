@@ -163,6 +163,9 @@ namespace ropras::ompl_ext
         /// grows tree \a a by near -> to (grow), then connects the other tree to the new node: 1 when a solution
         /// was built, 0 when grown only, -1 when the extension failed
         int growAndConnect(int a, std::size_t near, const double *to, bool endValid);
+        /// one iteration's extension of tree \a a toward \a sample (its float copy in sampleF_): checked at once, or
+        /// queued once batch_after extensions have failed (growPending); true when a solution was built
+        bool extendTowardSample(int a, const double *sample);
         /// checks the queued ends in one batch (obstacleHitsBatch), then grows the queued extensions in order
         /// (growAndConnect); true when a solution was built
         bool growPending();
