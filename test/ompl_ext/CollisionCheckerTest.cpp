@@ -123,11 +123,7 @@ TEST(CollisionCheckerTest, ObstacleHitsAreTheEnvironmentPartOfTheVerdicts)
         if (k % 97 == 3)
             q[k % dof] = k % 2 == 0 ? std::numeric_limits<double>::quiet_NaN() : robot->joints()[k % dof].upper + 1e-6;
         qs.insert(qs.end(), q.begin(), q.end());
-        const std::vector<Eigen::Vector3d> c = robot->sphereCentersReference(q.data());
-        double m = std::numeric_limits<double>::infinity();
-        for (std::size_t s = 0; s < c.size(); ++s)
-            m = std::min(m, env.signedDistance(c[s], robot->spheres()[s].radius));
-        obstacleMargin.push_back(m);
+        obstacleMargin.push_back(referenceObstacleMargin(*robot, env, robot->sphereCentersReference(q.data())));
         fullMargin.push_back(referenceMargin(*robot, env, q.data()));
     }
     for (SimdBackend b : backends())

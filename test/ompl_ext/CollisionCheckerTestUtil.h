@@ -37,15 +37,25 @@ namespace ropras::test
         return q;
     }
 
+    /// independent brute force, obstacles only: min over every sphere of its signed distance to the environment
+    /// (reference FK \a c, double precision)
+    inline double referenceObstacleMargin(const RobotModel &robot, const Environment &env,
+                                          const std::vector<Eigen::Vector3d> &c)
+    {
+        const auto &spheres = robot.spheres();
+        double margin = std::numeric_limits<double>::infinity();
+        for (std::size_t s = 0; s < spheres.size(); ++s)
+            margin = std::min(margin, env.signedDistance(c[s], spheres[s].radius));
+        return margin;
+    }
+
     /// independent brute force: min over every sphere of its signed distance to the environment and over
     /// every self-collision sphere pair of their signed distance (reference FK, double precision)
     inline double referenceMargin(const RobotModel &robot, const Environment &env, const double *q)
     {
         const std::vector<Eigen::Vector3d> c = robot.sphereCentersReference(q);
         const auto &spheres = robot.spheres();
-        double margin = std::numeric_limits<double>::infinity();
-        for (std::size_t s = 0; s < spheres.size(); ++s)
-            margin = std::min(margin, env.signedDistance(c[s], spheres[s].radius));
+        double margin = referenceObstacleMargin(robot, env, c);
         const auto &links = robot.collisionLinks();
         for (const auto &pair : robot.selfCollisionPairs())
         {

@@ -110,7 +110,6 @@ namespace ropras::ompl_ext
         dofPadded_ = (dof_ + 3) / 4 * 4;
         scratch_.assign(3 * dofPadded_, 0.0);
         pendingQ_.assign(BATCH_ENDS * dof_, 0.0);
-        pendingCount_ = 0;
         sampleF_.assign(dofPadded_, 0.0f);
         lowerPadded_.assign(dofPadded_, 0.0);
         widthPadded_.assign(dofPadded_, 0.0);
@@ -180,7 +179,6 @@ namespace ropras::ompl_ext
             tree.parent.clear();
             tree.radius.clear();
         }
-        pendingCount_ = 0;
         // The Halton sequence continues across queries (a retry after clear() draws new samples).
     }
 
@@ -285,7 +283,7 @@ namespace ropras::ompl_ext
                                        bool connect, std::size_t &near, double *to, bool &reached) const
     {
         double distSq;
-        const bool domain = dynamicDomain_ && (!connect || ddConnect_);
+        const bool domain = usesDomain(connect);
         reached = false;
         if (fromNode < 0)
         {
@@ -324,7 +322,7 @@ namespace ropras::ompl_ext
 
     int VectorizedRRTConnect::grow(Tree &tree, std::size_t near, const double *to, bool connect, bool endValid)
     {
-        const bool domain = dynamicDomain_ && (!connect || ddConnect_);
+        const bool domain = usesDomain(connect);
         if (!endValid || !motionValid(tree.q.data() + near * dof_, to))
         {
             if (domain)
@@ -475,12 +473,13 @@ namespace ropras::ompl_ext
         // solution, as in bench-mbm): evaluate it before the first iteration and then once per 32 units of work, a
         // motion check counting 8 and an iteration 1, i.e. after at most 4 motion checks (a few us) or 32 samples
         // the dynamic domain rejected without any check.
-        std::uint64_t checksSeen = motionChecks_ + endBatches_;  // a batch of ends counts like a motion check
+        const auto checks = [this] { return motionChecks_ + endBatches_; };  // a batch of ends counts like a check
+        std::uint64_t checksSeen = checks();
         std::uint64_t work = 32;
         while (true)
         {
-            work += 1 + 8 * (motionChecks_ + endBatches_ - checksSeen);
-            checksSeen = motionChecks_ + endBatches_;
+            work += 1 + 8 * (checks() - checksSeen);
+            checksSeen = checks();
             if (work >= 32)
             {
                 if (ptc)

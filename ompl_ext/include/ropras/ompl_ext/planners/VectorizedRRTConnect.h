@@ -148,6 +148,8 @@ namespace ropras::ompl_ext
         void addNode(Tree &tree, const double *q, int parent);
         /// the next sample into \a out and, in float, into \a outF (for the nearest-neighbour scan)
         void sample(double *out, float *outF);
+        /// whether an extension (or, with \a connect, a connection step) takes part in the dynamic domain
+        bool usesDomain(bool connect) const { return dynamicDomain_ && (!connect || ddConnect_); }
         /** \brief The extension of \a tree toward \a target by at most range_ from its nearest node (or from
             \a fromNode when >= 0, without the dynamic-domain test): the node \a near to grow from and the end \a to
             (dof_ values); \a reached: the end is the target. False when the dynamic domain rejects the target.
@@ -218,7 +220,7 @@ namespace ropras::ompl_ext
         Pending pending_[BATCH_ENDS];
         bool pendingHit_[BATCH_ENDS]{};  ///< the queued ends that hit an obstacle
         std::vector<double> pendingQ_;   ///< the queued ends, BATCH_ENDS x dof_ (sized in setup())
-        std::size_t pendingCount_{0};
+        std::size_t pendingCount_{0};    ///< reset at the start of every solve
     };
 }  // namespace ropras::ompl_ext
 
