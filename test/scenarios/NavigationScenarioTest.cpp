@@ -74,6 +74,22 @@ namespace ropras::scenarios::test
             {"heuristic_decay", "(0, 1]"});
         expectErrorMentions([] { navScenario("maze2d", {{"heuristic_decay", -0.99}}); }, {"heuristic_decay"});
         expectErrorMentions([] { navScenario("maze2d", {{"heuristic_decay", "fast"}}); }, {"heuristic_decay"});
+        expectErrorMentions([] { navScenario("maze2d", {{"heuristic_mdp", "yes"}}); }, {"heuristic_mdp", "boolean"});
+        expectErrorMentions(
+            [] {
+                navScenario("light-dark", {{"heuristic_mdp", true}});
+            },
+            {"heuristic_mdp", "heuristic_value true"});
+        expectErrorMentions(
+            [] {
+                navScenario("maze2d", {{"heuristic_mdp", true}, {"heuristic_decay", 0.99}});
+            },
+            {"heuristic_mdp", "heuristic_decay 1", "0.99"});
+        expectErrorMentions(
+            [] {
+                navScenario("random3d-2", {{"heuristic_value", true}, {"heuristic_mdp", true}});
+            },
+            {"heuristic_mdp", "1030301", "250000"});
         // a start in collision with a wall
         expectErrorMentions(
             [] {

@@ -10,6 +10,9 @@ namespace ropras::scenarios
 {
     namespace
     {
+        /// heuristic_mdp's lattice (a sparse LU of one row per point): Maze2D has 10 201 points, Random3D 1 030 301
+        constexpr double MAX_MDP_CELLS = 250000.0;
+
         /// the common reader plus the navigation shapes (points, boxes)
         class Reader : public ConfigReader
         {
@@ -81,6 +84,52 @@ namespace ropras::scenarios
             s << ")";
             return s.str();
         }
+
+        /// heuristic_value, heuristic_decay, heuristic_mdp: the leaf value of the search
+        void readLeafValue(const Reader &r, NavigationConfig &c)
+        {
+            const auto &heuristic = r.at("heuristic_value");
+            if (!heuristic.is_boolean())
+            {
+                r.fail("heuristic_value", "must be true or false, not " + heuristic.dump());
+            }
+            c.heuristicValue = heuristic.get<bool>();
+            c.heuristicDecay = r.positive("heuristic_decay");
+            if (c.heuristicDecay > 1.0)
+            {
+                r.fail("heuristic_decay", "= " + nlohmann::json(c.heuristicDecay).dump() + " must be in (0, 1]");
+            }
+            const auto &mdp = r.at("heuristic_mdp");
+            if (!mdp.is_boolean())
+            {
+                r.fail("heuristic_mdp", "must be true or false, not " + mdp.dump());
+            }
+            c.heuristicMdp = mdp.get<bool>();
+            if (c.heuristicMdp && !c.heuristicValue)
+            {
+                r.fail("heuristic_mdp",
+                       "= true needs heuristic_value true (it replaces the leaf value's distance field)");
+            }
+            if (c.heuristicMdp)
+            {
+                double cells = 1.0;
+                for (int k = 0; k < c.dims; ++k)
+                    cells *= std::floor((c.bounds.hi[k] - c.bounds.lo[k]) / c.stepLength) + 1.0;
+                if (cells > MAX_MDP_CELLS)
+                {
+                    r.fail("heuristic_mdp", "= true solves the problem over a lattice of " +
+                                                std::to_string(static_cast<long>(cells)) +
+                                                " points (bounds / step), more than " +
+                                                std::to_string(static_cast<long>(MAX_MDP_CELLS)) + "; use it in 2-D");
+                }
+            }
+            if (c.heuristicMdp && c.heuristicDecay != 1.0)
+            {
+                r.fail("heuristic_mdp",
+                       "= true needs heuristic_decay 1 (the decay applies to the shortest path's value), not " +
+                           nlohmann::json(c.heuristicDecay).dump());
+            }
+        }
     }  // namespace
 
     NavigationConfig parseNavigationConfig(const std::string &scenario, const nlohmann::json &json)
@@ -146,17 +195,7 @@ namespace ropras::scenarios
         c.dangerMargin = r.nonNegative("danger_margin");
         c.obstacleMargin = r.nonNegative("obstacle_margin");
         c.recoverFromObservation = r.choice("depletion_recovery", {"ignore", "observation"}) == "observation";
-        const auto &heuristic = r.at("heuristic_value");
-        if (!heuristic.is_boolean())
-        {
-            r.fail("heuristic_value", "must be true or false, not " + heuristic.dump());
-        }
-        c.heuristicValue = heuristic.get<bool>();
-        c.heuristicDecay = r.positive("heuristic_decay");
-        if (c.heuristicDecay > 1.0)
-        {
-            r.fail("heuristic_decay", "= " + nlohmann::json(c.heuristicDecay).dump() + " must be in (0, 1]");
-        }
+        readLeafValue(r, c);
         const auto &evidence = r.at("termination_evidence");
         if (!evidence.is_boolean())
         {

@@ -48,6 +48,10 @@ namespace ropras::scenarios
         if (config_.heuristicValue)
         {
             buildGoalDistance();
+            if (config_.heuristicMdp)
+            {
+                buildSlipValue();
+            }
         }
     }
 
@@ -63,30 +67,19 @@ namespace ropras::scenarios
         }
         const std::size_t n = fieldCounts_[0] * fieldCounts_[1] * fieldCounts_[2];
         goalDistance_.assign(n, UNREACHABLE);
-        const auto center = [&](std::size_t i, std::size_t j, std::size_t l, double *p)
-        {
-            const std::size_t idx[3] = {i, j, l};
-            for (int k = 0; k < 3; ++k)
-            {
-                p[k] = k < config_.dims ? config_.bounds.lo[k] + static_cast<double>(idx[k]) * step : 0.0;
-            }
-        };
         std::vector<std::uint8_t> free(n, 0);
         std::deque<std::size_t> queue;
         double p[3];
-        for (std::size_t l = 0; l < fieldCounts_[2]; ++l)
-            for (std::size_t j = 0; j < fieldCounts_[1]; ++j)
-                for (std::size_t i = 0; i < fieldCounts_[0]; ++i)
-                {
-                    center(i, j, l, p);
-                    const std::size_t c = (l * fieldCounts_[1] + j) * fieldCounts_[0] + i;
-                    free[c] = !blocked(p) && !inDanger(p);
-                    if (free[c] && config_.goal.contains(p))
-                    {
-                        goalDistance_[c] = 0;
-                        queue.push_back(c);
-                    }
-                }
+        for (std::size_t c = 0; c < n; ++c)
+        {
+            fieldPoint(c, p);
+            free[c] = !blocked(p) && !inDanger(p);
+            if (free[c] && config_.goal.contains(p))
+            {
+                goalDistance_[c] = 0;
+                queue.push_back(c);
+            }
+        }
         const std::size_t stride[3] = {1, fieldCounts_[0], fieldCounts_[0] * fieldCounts_[1]};
         while (!queue.empty())
         {
@@ -111,12 +104,18 @@ namespace ropras::scenarios
         }
     }
 
-    long NavigationModel::goalDistance(const double *p) const noexcept
+    void NavigationModel::fieldPoint(std::size_t c, double *p) const noexcept
     {
-        if (goalDistance_.empty())
+        const std::size_t idx[3] = {c % fieldCounts_[0], (c / fieldCounts_[0]) % fieldCounts_[1],
+                                    c / (fieldCounts_[0] * fieldCounts_[1])};
+        for (int k = 0; k < 3; ++k)
         {
-            return -1;
+            p[k] = k < config_.dims ? config_.bounds.lo[k] + static_cast<double>(idx[k]) * config_.stepLength : 0.0;
         }
+    }
+
+    std::size_t NavigationModel::fieldCell(const double *p) const noexcept
+    {
         std::size_t c = 0, stride = 1;
         for (int k = 0; k < config_.dims; ++k)
         {
@@ -124,11 +123,25 @@ namespace ropras::scenarios
             c += stride * static_cast<std::size_t>(std::clamp(f, 0.0, static_cast<double>(fieldCounts_[k] - 1)));
             stride *= fieldCounts_[k];
         }
+        return c;
+    }
+
+    long NavigationModel::goalDistance(const double *p) const noexcept
+    {
+        if (goalDistance_.empty())
+        {
+            return -1;
+        }
+        const std::size_t c = fieldCell(p);
         return goalDistance_[c] == UNREACHABLE ? -1 : static_cast<long>(goalDistance_[c]);
     }
 
     double NavigationModel::heuristicValue(const State &s) const noexcept
     {
+        if (!slipValue_.empty())
+        {
+            return slipValue_[fieldCell(s.p)];
+        }
         const long d = goalDistance(s.p);
         if (d < 0)
         {

@@ -91,6 +91,10 @@ namespace ropras::scenarios
         /// per-step factor rho in (0, 1] on the goal reward of that leaf value: goal_reward (gamma rho)^d; 1 = the
         /// discounted shortest path walked for certain, below 1 the farther goal is the less certain one
         double heuristicDecay{1.0};
+        /// "heuristic_mdp": with heuristicValue, the leaf value is the optimal value of the fully observed problem
+        /// with the slip (value iteration over the lattice: a position from which every way on passes close to a
+        /// danger zone is worth less) instead of the shortest path's; needs heuristicDecay 1
+        bool heuristicMdp{false};
         /// the belief uses "the episode went on" as evidence (no particle stays in the goal or a danger zone);
         /// false = the paper's observation space R^n u {None} only
         bool terminationEvidence{false};

@@ -63,11 +63,15 @@ namespace ropras::scenarios
         /** \brief With `heuristic_value` on: the value of walking the shortest danger-free lattice path of d
             steps to the goal, goal_reward (gamma rho)^d + step_reward (1 - gamma^d) / (1 - gamma) (rho =
             `heuristic_decay`, 1 by default), d from a BFS distance field (grid of step-length cells, the
-            nearest cell); 0 when off or unreachable. Used by the solvers at the leaves of the search (below
-            the depth limit / at the end of a rollout). */
+            nearest cell); 0 when off or unreachable. With `heuristic_mdp` on instead: the optimal value of the
+            fully observed problem with the slip at the nearest lattice point (policy iteration, buildSlipValue; 0
+            in walls, danger zones and the goal). Used by the solvers at the leaves of the search (below the
+            depth limit / at the end of a rollout). */
         double heuristicValue(const State &s) const noexcept;
         /// BFS distance (steps) of the cell nearest \a p to the goal; -1 when unreachable or off
         long goalDistance(const double *p) const noexcept;
+        /// heuristic_mdp: policy iterations of buildSlipValue (0 when off)
+        std::size_t slipValueIterations() const noexcept { return slipIterations_; }
 
         // --- shared with NavigationWorld
         /** \brief The action that really executes: \a a, or with probability slip another one uniformly. */
@@ -88,6 +92,16 @@ namespace ropras::scenarios
     private:
         static constexpr std::uint16_t UNREACHABLE = 0xFFFF;
         void buildGoalDistance();
+        /** \brief heuristic_mdp: V(c) = max_a sum_b P(b | a) (r(c, b) + gamma V(next(c, b))) over the lattice
+            of the distance field, P(b | a) = 1 - slip for b = a and slip / (2 dims - 1) for each other action, a
+            blocked move stays, danger zones and the goal end the episode. Policy iteration (each policy's values
+            from a sparse LU solve, at most 1000), starting from the policy greedy on the shortest path's value,
+            until no action improves; throws ropras::Error if a solve fails. */
+        void buildSlipValue();
+        /// lattice point of field cell \a c (the distance field's cells, stepLength apart from bounds.lo)
+        void fieldPoint(std::size_t c, double *p) const noexcept;
+        /// the field cell nearest \a p (clamped to the lattice)
+        std::size_t fieldCell(const double *p) const noexcept;
         std::size_t cellOf(const double *p) const noexcept;
 
         NavigationConfig config_;
@@ -101,6 +115,9 @@ namespace ropras::scenarios
         // goal distance field (heuristic_value): cells of stepLength from bounds.lo, steps to the goal
         std::size_t fieldCounts_[3]{1, 1, 1};
         std::vector<std::uint16_t> goalDistance_;
+        // heuristic_mdp: per field cell, the fully observed problem's optimal value (empty when off)
+        std::vector<double> slipValue_;
+        std::size_t slipIterations_{0};
     };
 }  // namespace ropras::scenarios
 
