@@ -99,7 +99,7 @@ namespace ropras::scenarios
                     rhs[static_cast<Eigen::Index>(i)] = r;
                 }
                 system.setFromTriplets(triplets.begin(), triplets.end());
-                lu.compute(system);  // the pattern too: without the slip it changes with the policy
+                lu.compute(system);               // the pattern too: without the slip it changes with the policy
                 if (lu.info() != Eigen::Success)  // I - gamma P is diagonally dominant for gamma < 1: not expected
                     throw Error("heuristic_mdp: the sparse LU of a policy's values failed: " + lu.lastErrorMessage());
                 const Eigen::VectorXd v = lu.solve(rhs);
