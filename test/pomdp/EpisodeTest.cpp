@@ -179,3 +179,77 @@ TEST(EpisodeTest, SimulatedWorldRejectsANullModel)
 {
     EXPECT_THROW(SimulatedWorld<TigerModel>(nullptr), ropras::Error);
 }
+
+namespace
+{
+    /** \brief Uninformative: states 0..99 drawn at the start, every action moves +1, observations are always 0. Its
+        rollout policy records the states it is asked about. */
+    struct BlindModel
+    {
+        using State = int;
+        using Action = int;
+        using Observation = int;
+        std::vector<int> *asked{nullptr};
+
+        StepResult<State, Observation> step(State s, Action a, Rng &) const noexcept { return {s + a, 0, -1.0, false}; }
+        double observationProbability(Observation, State, Action) const noexcept { return 1.0; }
+        State sampleInitialState(Rng &rng) const noexcept { return static_cast<int>(rng.uniformIndex(100)); }
+        double discount() const noexcept { return 0.9; }
+        Action rolloutAction(State s, Rng &) const noexcept
+        {
+            asked->push_back(s);
+            return 1;
+        }
+    };
+
+    /// a world whose robot is somewhere no particle can be (below 0)
+    class FarWorld final : public World<BlindModel>
+    {
+    public:
+        void reset(const int &) override { state_ = -1000; }
+        const int &state() const override { return state_; }
+        StepResult<int, int> step(const int &a, Rng &) override
+        {
+            state_ += a;
+            return {state_, 0, -1.0, false};
+        }
+
+    private:
+        int state_{0};
+    };
+
+    class NoPlanSolver final : public Solver<BlindModel>
+    {
+    public:
+        std::string name() const override { return "none"; }
+        PlanResult<int> plan(BeliefView<int>, const Budget &, Rng &) override { return {}; }
+    };
+}  // namespace
+
+TEST(EpisodeTest, AFailedPlanFallsBackOnTheBeliefNotOnTheHiddenState)
+{
+    // When the solver returns no macro-action, the episode executes the model's rollout action; the agent does not
+    // know the world's state, so that action is chosen for a particle of its belief.
+    std::vector<int> asked;
+    auto model = std::make_shared<BlindModel>();
+    model->asked = &asked;
+    NoPlanSolver solver;
+    ParticleFilterSettings fs;
+    fs.numParticles = 20;
+    ParticleFilter<BlindModel> filter(model, fs);
+    Rng rng(5);
+    filter.initialize(rng);
+    FarWorld world;
+    EpisodeSettings settings;
+    settings.maxSteps = 3;
+    const auto r = runEpisode(*model, solver, filter, world, settings, rng);
+    EXPECT_EQ(r.steps, 3u);
+    EXPECT_EQ(r.invalidPlans, 3u);
+    ASSERT_EQ(asked.size(), 3u);
+    for (std::size_t k = 0; k < asked.size(); ++k)
+    {
+        EXPECT_GE(asked[k], static_cast<int>(k)) << "a particle after " << k << " steps";
+        EXPECT_LT(asked[k], 100 + static_cast<int>(k));
+    }
+    EXPECT_EQ(world.state(), -997);
+}

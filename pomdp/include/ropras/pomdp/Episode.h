@@ -43,7 +43,8 @@ namespace ropras::pomdp
         /** \brief The episode ended in a goal state (the model's optional reachedGoal(); false without it). */
         bool success{false};
         std::size_t plans{0};
-        /** \brief Plans that returned no action (the model's rollout action was executed instead). */
+        /** \brief Plans that returned no action (the model's rollout action for a particle of the belief was executed
+            instead). */
         std::size_t invalidPlans{0};
         std::size_t depletions{0};
         /** \brief Sum over the planning calls (simulations, reference requests and failures, seconds, ...). */
@@ -183,7 +184,8 @@ namespace ropras::pomdp
             if (!plan.valid || plan.action.empty())
             {
                 ++result.invalidPlans;
-                plan.action.assign(1, rolloutActionOf(model, world.state(), rng));
+                // the agent does not know the world's state: the rollout action of a particle of its belief
+                plan.action.assign(1, rolloutActionOf(model, belief[rng.uniformIndex(belief.size())], rng));
             }
             if (settings.replanEveryStep)
             {
