@@ -84,20 +84,28 @@ namespace
         std::vector<std::size_t> planSteps, macroLengths;
     };
 
+    /// an episode of \a solver in \a world with a filter of \a particles on \a model (seed \a seed)
+    template <class M>
+    EpisodeResult runWith(const std::shared_ptr<const M> &model, Solver<M> &solver, World<M> &world,
+                          const EpisodeSettings &settings, std::size_t particles, std::uint64_t seed,
+                          EpisodeObserver<M> *observer = nullptr)
+    {
+        ParticleFilterSettings fs;
+        fs.numParticles = particles;
+        ParticleFilter<M> filter(model, fs);
+        Rng rng(seed);
+        filter.initialize(rng);
+        return runEpisode(*model, solver, filter, world, settings, rng, observer);
+    }
+
     EpisodeResult runLine(World<LineModel> &world, bool replanEveryStep, std::size_t maxSteps,
                           EpisodeObserver<LineModel> *observer = nullptr)
     {
-        auto model = std::make_shared<const LineModel>();
         FixedSolver solver;
-        ParticleFilterSettings fs;
-        fs.numParticles = 4;
-        ParticleFilter<LineModel> filter(model, fs);
-        Rng rng(3);
-        filter.initialize(rng);
         EpisodeSettings settings;
         settings.maxSteps = maxSteps;
         settings.replanEveryStep = replanEveryStep;
-        return runEpisode(*model, solver, filter, world, settings, rng, observer);
+        return runWith(std::make_shared<const LineModel>(), solver, world, settings, 4, 3, observer);
     }
 }  // namespace
 
@@ -234,15 +242,10 @@ TEST(EpisodeTest, AFailedPlanFallsBackOnTheBeliefNotOnTheHiddenState)
     auto model = std::make_shared<BlindModel>();
     model->asked = &asked;
     NoPlanSolver solver;
-    ParticleFilterSettings fs;
-    fs.numParticles = 20;
-    ParticleFilter<BlindModel> filter(model, fs);
-    Rng rng(5);
-    filter.initialize(rng);
     FarWorld world;
     EpisodeSettings settings;
     settings.maxSteps = 3;
-    const auto r = runEpisode(*model, solver, filter, world, settings, rng);
+    const auto r = runWith<BlindModel>(model, solver, world, settings, 20, 5);
     EXPECT_EQ(r.steps, 3u);
     EXPECT_EQ(r.invalidPlans, 3u);
     ASSERT_EQ(asked.size(), 3u);
