@@ -85,8 +85,8 @@ namespace ropras::scenarios
         {
             const std::size_t c = queue.front();
             queue.pop_front();
-            const std::size_t idx[3] = {c % fieldCounts_[0], (c / fieldCounts_[0]) % fieldCounts_[1],
-                                        c / (fieldCounts_[0] * fieldCounts_[1])};
+            std::size_t idx[3];
+            fieldIndices(c, idx);
             for (int a = 0; a < 2 * config_.dims; ++a)
             {
                 const int k = a / 2;
@@ -104,10 +104,17 @@ namespace ropras::scenarios
         }
     }
 
+    void NavigationModel::fieldIndices(std::size_t c, std::size_t *idx) const noexcept
+    {
+        idx[0] = c % fieldCounts_[0];
+        idx[1] = (c / fieldCounts_[0]) % fieldCounts_[1];
+        idx[2] = c / (fieldCounts_[0] * fieldCounts_[1]);
+    }
+
     void NavigationModel::fieldPoint(std::size_t c, double *p) const noexcept
     {
-        const std::size_t idx[3] = {c % fieldCounts_[0], (c / fieldCounts_[0]) % fieldCounts_[1],
-                                    c / (fieldCounts_[0] * fieldCounts_[1])};
+        std::size_t idx[3];
+        fieldIndices(c, idx);
         for (int k = 0; k < 3; ++k)
         {
             p[k] = k < config_.dims ? config_.bounds.lo[k] + static_cast<double>(idx[k]) * config_.stepLength : 0.0;

@@ -98,6 +98,8 @@ namespace ropras::scenarios
             from a sparse LU solve, at most 1000), starting from the policy greedy on the shortest path's value,
             until no action improves; throws ropras::Error if a solve fails. */
         void buildSlipValue();
+        /// per-axis indices of field cell \a c
+        void fieldIndices(std::size_t c, std::size_t *idx) const noexcept;
         /// lattice point of field cell \a c (the distance field's cells, stepLength apart from bounds.lo)
         void fieldPoint(std::size_t c, double *p) const noexcept;
         /// the field cell nearest \a p (clamped to the lattice)
