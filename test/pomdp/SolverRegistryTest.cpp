@@ -2,6 +2,8 @@
 // budgets and beliefs are rejected with ropras::Error; same seed, same result.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -18,15 +20,26 @@ using namespace ropras::pomdp;
 
 namespace
 {
+    /// fails its first \a failures requests (all of them by default), then plans the one-action macro "listen"
     class FailingPolicy final : public ReferencePolicy<TigerModel>
     {
     public:
+        explicit FailingPolicy(std::size_t failures = std::numeric_limits<std::size_t>::max()) : failures_(failures) {}
         bool sample(const TigerModel::State &, BeliefView<TigerModel::State>, Rng &,
-                    std::vector<TigerModel::Action> &) override
+                    std::vector<TigerModel::Action> &macro) override
         {
-            return false;
+            if (requests_++ < failures_)
+            {
+                return false;
+            }
+            macro.assign(1, TigerModel::LISTEN);
+            return true;
         }
         std::string name() const override { return "failing"; }
+
+    private:
+        std::size_t failures_;
+        std::size_t requests_{0};
     };
 
     std::string errorOf(const std::function<void()> &f)
@@ -237,11 +250,19 @@ TEST(SolverRegistryTest, RPomcpAndBPlanUseTheReferencePolicy)
     EXPECT_EQ(rpomcp.rootChildren().size(), 5u);  // K macros at the root
     EXPECT_EQ(planned.statistics.referenceRequested, 5u * planned.statistics.beliefNodes);
 
+    // A root whose K plans all failed asks again on the next simulation (a transient failure does not spend the
+    // call on a root without actions); below the root a node without actions is a leaf.
     PomcpSolver<TigerModel> failingRpomcp(model, std::make_unique<FailingPolicy>(), settings, "rpomcp");
     const auto failed = failingRpomcp.plan(view, Budget::ofSimulations(20), rng);
     EXPECT_FALSE(failed.valid);
-    EXPECT_EQ(failed.statistics.referenceRequested, 5u);
-    EXPECT_EQ(failed.statistics.referenceFailed, 5u);
+    EXPECT_EQ(failed.statistics.referenceRequested, 5u * 20u);
+    EXPECT_EQ(failed.statistics.referenceFailed, 5u * 20u);
+    PomcpSolver<TigerModel> recovering(model, std::make_unique<FailingPolicy>(12), settings, "rpomcp");
+    const auto recovered = recovering.plan(view, Budget::ofSimulations(20), rng);
+    ASSERT_TRUE(recovered.valid);
+    EXPECT_EQ(recovered.action, std::vector<TigerModel::Action>{TigerModel::LISTEN});
+    EXPECT_EQ(recovering.rootChildren().size(), 3u);  // the third round of 5: 2 failed, 3 planned
+    EXPECT_EQ(recovered.statistics.referenceFailed, 12u);
 
     BPlanSolver<TigerModel> bplan(model, std::make_unique<FailingPolicy>(), 3);
     const auto fallback = bplan.plan(view, Budget::ofSimulations(1), rng);

@@ -350,7 +350,9 @@ namespace ropras::pomdp
             {
                 stats_.maxDepth = depth;
             }
-            if (!beliefs_[b].expanded)
+            // the root asks again while every plan it asked for failed: the call must end with an action if any
+            // plan succeeds (deeper, a node without actions is a leaf)
+            if (!beliefs_[b].expanded || (b == 0 && beliefs_[b].firstAction == NONE))
             {
                 expand(b, s, rng);
                 if (b != 0)
