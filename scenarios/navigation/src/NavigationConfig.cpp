@@ -105,29 +105,30 @@ namespace ropras::scenarios
                 r.fail("heuristic_mdp", "must be true or false, not " + mdp.dump());
             }
             c.heuristicMdp = mdp.get<bool>();
-            if (c.heuristicMdp && !c.heuristicValue)
+            if (!c.heuristicMdp)
+            {
+                return;
+            }
+            if (!c.heuristicValue)
             {
                 r.fail("heuristic_mdp",
                        "= true needs heuristic_value true (it replaces the leaf value's distance field)");
             }
-            if (c.heuristicMdp)
-            {
-                double cells = 1.0;
-                for (int k = 0; k < c.dims; ++k)
-                    cells *= std::floor((c.bounds.hi[k] - c.bounds.lo[k]) / c.stepLength) + 1.0;
-                if (cells > MAX_MDP_CELLS)
-                {
-                    r.fail("heuristic_mdp", "= true solves the problem over a lattice of " +
-                                                std::to_string(static_cast<long>(cells)) +
-                                                " points (bounds / step), more than " +
-                                                std::to_string(static_cast<long>(MAX_MDP_CELLS)) + "; use it in 2-D");
-                }
-            }
-            if (c.heuristicMdp && c.heuristicDecay != 1.0)
+            if (c.heuristicDecay != 1.0)
             {
                 r.fail("heuristic_mdp",
                        "= true needs heuristic_decay 1 (the decay applies to the shortest path's value), not " +
                            nlohmann::json(c.heuristicDecay).dump());
+            }
+            double cells = 1.0;
+            for (int k = 0; k < c.dims; ++k)
+                cells *= std::floor((c.bounds.hi[k] - c.bounds.lo[k]) / c.stepLength) + 1.0;
+            if (cells > MAX_MDP_CELLS)
+            {
+                r.fail("heuristic_mdp", "= true solves the problem over a lattice of " +
+                                            std::to_string(static_cast<long>(cells)) +
+                                            " points (bounds / step), more than " +
+                                            std::to_string(static_cast<long>(MAX_MDP_CELLS)) + "; use it in 2-D");
             }
         }
     }  // namespace
