@@ -42,6 +42,16 @@ namespace ropras::scenarios::test
             },
             {"maze2d", "slip"});
         expectErrorMentions([] { navScenario("maze2d", {{"slip", 1.5}}); }, {"maze2d", "slip", "[0, 1]"});
+        // a value that fails validation names where the overrides came from (e.g. the --config file)
+        expectErrorMentions(
+            []
+            {
+                ScenarioOptions options;
+                options.overrides = {{"slip", 1.5}};
+                options.source = "slippery.json";
+                scenarioRegistry().create("maze2d", options);
+            },
+            {"slippery.json: ", "maze2d", "slip", "[0, 1]"});
         expectErrorMentions(
             [] {
                 navScenario("light-dark", {{"robot_radius", -0.1}});
@@ -74,6 +84,18 @@ namespace ropras::scenarios::test
             {"heuristic_decay", "(0, 1]"});
         expectErrorMentions([] { navScenario("maze2d", {{"heuristic_decay", -0.99}}); }, {"heuristic_decay"});
         expectErrorMentions([] { navScenario("maze2d", {{"heuristic_decay", "fast"}}); }, {"heuristic_decay"});
+        // grids too large to build (std::bad_alloc, or gigabytes, before these checks)
+        expectErrorMentions(
+            [] {
+                navScenario("maze2d", {{"bounds", {{-1e7, -1e7}, {1e7, 1e7}}}});
+            },
+            {"bounds", "collision grid", "cells", "more than 10000000"});
+        expectErrorMentions(
+            [] {
+                navScenario("maze2d", {{"step", 1e-4}});
+            },
+            {"heuristic_value", "lattice points", "more than 50000000"});
+        EXPECT_NO_THROW(navScenario("light-dark", {{"step", 1e-4}}));  // no distance field there
         expectErrorMentions([] { navScenario("maze2d", {{"heuristic_mdp", "yes"}}); }, {"heuristic_mdp", "boolean"});
         expectErrorMentions(
             [] {

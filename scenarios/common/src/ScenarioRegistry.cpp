@@ -100,6 +100,24 @@ namespace ropras::scenarios
         }
     }  // namespace
 
+    std::unique_ptr<Scenario> ScenarioRegistry::create(const std::string &name, const ScenarioOptions &options) const
+    {
+        const ScenarioEntry &entry = get(name);
+        try
+        {
+            return entry.factory(options);
+        }
+        catch (const Error &e)
+        {
+            const std::string message = e.what();
+            if (options.overrides.empty() || message.find(options.source) != std::string::npos)
+            {
+                throw;
+            }
+            throw Error(options.source + ": " + message);
+        }
+    }
+
     nlohmann::json applyOverrides(const std::string &scenario, const nlohmann::json &defaults,
                                   const ScenarioOptions &options)
     {

@@ -10,8 +10,19 @@ namespace ropras::scenarios
 {
     namespace
     {
-        /// heuristic_mdp's lattice (a sparse LU of one row per point): Maze2D has 10 201 points, Random3D 1 030 301
-        constexpr double MAX_MDP_CELLS = 250000.0;
+        /// the collision grid's cells (a list of boxes each): Maze2D has 676, Random3D 17 576
+        constexpr double MAX_GRID_CELLS = 1e7;
+        /// heuristic_value's lattice (2 bytes of distance and 1 of scratch per point): Random3D has 1 030 301 points
+        constexpr double MAX_FIELD_POINTS = 5e7;
+        /// heuristic_mdp's lattice (a sparse LU of one row per point): Maze2D has 10 201 points
+        constexpr double MAX_MDP_POINTS = 250000.0;
+
+        /// "N points (bounds / step), more than MAX"
+        std::string tooMany(double points, double most, const char *what)
+        {
+            return std::to_string(static_cast<long long>(std::min(points, 9e18))) + " " + what + ", more than " +
+                   std::to_string(static_cast<long long>(most));
+        }
 
         /// the common reader plus the navigation shapes (points, boxes)
         class Reader : public ConfigReader
@@ -94,6 +105,12 @@ namespace ropras::scenarios
                 r.fail("heuristic_value", "must be true or false, not " + heuristic.dump());
             }
             c.heuristicValue = heuristic.get<bool>();
+            const double points = gridPoints(c, c.stepLength);
+            if (c.heuristicValue && points > MAX_FIELD_POINTS)
+            {
+                r.fail("heuristic_value", "= true builds a distance field over " +
+                                              tooMany(points, MAX_FIELD_POINTS, "lattice points (bounds / step)"));
+            }
             c.heuristicDecay = r.positive("heuristic_decay");
             if (c.heuristicDecay > 1.0)
             {
@@ -120,15 +137,11 @@ namespace ropras::scenarios
                        "= true needs heuristic_decay 1 (the decay applies to the shortest path's value), not " +
                            nlohmann::json(c.heuristicDecay).dump());
             }
-            double cells = 1.0;
-            for (int k = 0; k < c.dims; ++k)
-                cells *= std::floor((c.bounds.hi[k] - c.bounds.lo[k]) / c.stepLength) + 1.0;
-            if (cells > MAX_MDP_CELLS)
+            if (points > MAX_MDP_POINTS)
             {
-                r.fail("heuristic_mdp", "= true solves the problem over a lattice of " +
-                                            std::to_string(static_cast<long>(cells)) +
-                                            " points (bounds / step), more than " +
-                                            std::to_string(static_cast<long>(MAX_MDP_CELLS)) + "; use it in 2-D");
+                r.fail("heuristic_mdp", "= true solves the problem over " +
+                                            tooMany(points, MAX_MDP_POINTS, "lattice points (bounds / step)") +
+                                            "; use it in 2-D");
             }
         }
     }  // namespace
@@ -158,6 +171,12 @@ namespace ropras::scenarios
             r.fail("slip", "= " + nlohmann::json(c.slip).dump() + " must be in [0, 1]");
         }
         c.robotRadius = r.positive("robot_radius");
+        if (gridPoints(c, collisionGridCell(c)) > MAX_GRID_CELLS)
+        {
+            r.fail("bounds", "= " + boxToJson(c.bounds, c.dims).dump() + " needs a collision grid of " +
+                                 tooMany(gridPoints(c, collisionGridCell(c)), MAX_GRID_CELLS,
+                                         "cells (max(2 m, 4 robot radii) wide)"));
+        }
         c.stepReward = r.number("step_reward");
         c.goalReward = r.number("goal_reward");
         c.dangerReward = r.number("danger_reward");
@@ -284,6 +303,20 @@ namespace ropras::scenarios
             c.starts.push_back(p);
         }
         return c;
+    }
+
+    std::size_t gridPointsAlong(const NavigationConfig &c, double cell, int axis)
+    {
+        return axis < c.dims ? static_cast<std::size_t>(std::floor((c.bounds.hi[axis] - c.bounds.lo[axis]) / cell)) + 1
+                             : 1;
+    }
+
+    double gridPoints(const NavigationConfig &c, double cell)
+    {
+        double points = 1.0;
+        for (int k = 0; k < c.dims; ++k)
+            points *= std::floor((c.bounds.hi[k] - c.bounds.lo[k]) / cell) + 1.0;
+        return points;
     }
 
     nlohmann::json boxToJson(const NavBox &box, int dims)

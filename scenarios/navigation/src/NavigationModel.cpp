@@ -16,12 +16,9 @@ namespace ropras::scenarios
         blockers_ = config_.walls;
         blockers_.insert(blockers_.end(), config_.obstacles.begin(), config_.obstacles.end());
         const double r = config_.robotRadius;
-        cell_ = std::max(2.0, 4.0 * r);
+        cell_ = collisionGridCell(config_);
         for (int k = 0; k < 3; ++k)
-        {
-            const double extent = config_.bounds.hi[k] - config_.bounds.lo[k];
-            counts_[k] = k < config_.dims ? static_cast<std::size_t>(std::floor(extent / cell_)) + 1 : 1;
-        }
+            counts_[k] = gridPointsAlong(config_, cell_, k);
         const std::size_t cells = counts_[0] * counts_[1] * counts_[2];
         std::vector<std::vector<std::uint32_t>> lists(cells);
         for (std::size_t b = 0; b < blockers_.size(); ++b)
@@ -57,14 +54,8 @@ namespace ropras::scenarios
 
     void NavigationModel::buildGoalDistance()
     {
-        const double step = config_.stepLength;
         for (int k = 0; k < 3; ++k)
-        {
-            fieldCounts_[k] =
-                k < config_.dims
-                    ? static_cast<std::size_t>(std::floor((config_.bounds.hi[k] - config_.bounds.lo[k]) / step)) + 1
-                    : 1;
-        }
+            fieldCounts_[k] = gridPointsAlong(config_, config_.stepLength, k);
         const std::size_t n = fieldCounts_[0] * fieldCounts_[1] * fieldCounts_[2];
         goalDistance_.assign(n, UNREACHABLE);
         std::vector<std::uint8_t> free(n, 0);

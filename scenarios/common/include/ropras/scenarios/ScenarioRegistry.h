@@ -37,11 +37,10 @@ namespace ropras::scenarios
         /** \brief Throws ropras::Error naming the known scenarios when \a name is unknown. */
         const ScenarioEntry &get(const std::string &name) const;
         std::vector<std::string> names() const;
+        /** \brief The scenario \a name with \a options; a configuration error names \a options.source (the
+            overridden configuration is what failed validation) when the message does not already. */
         std::unique_ptr<Scenario> create(const std::string &name,
-                                         const ScenarioOptions &options = ScenarioOptions()) const
-        {
-            return get(name).factory(options);
-        }
+                                         const ScenarioOptions &options = ScenarioOptions()) const;
 
     private:
         std::map<std::string, ScenarioEntry> entries_;

@@ -113,6 +113,16 @@ namespace ropras::scenarios
         bounds, a start outside the bounds, in collision, in a danger zone or in the goal. */
     NavigationConfig parseNavigationConfig(const std::string &scenario, const nlohmann::json &json);
 
+    /// the model's collision grid cell (m): at least 2, at least 4 robot radii
+    inline double collisionGridCell(const NavigationConfig &c)
+    {
+        return std::max(2.0, 4.0 * c.robotRadius);
+    }
+    /// points along \a axis of a grid of \a cell-sized cells from bounds.lo: floor(extent / cell) + 1 (1 beyond dims)
+    std::size_t gridPointsAlong(const NavigationConfig &c, double cell, int axis);
+    /// points of that grid over every axis, as a double (no overflow for absurd bounds or cells)
+    double gridPoints(const NavigationConfig &c, double cell);
+
     /** \brief The scene for `ropras render` (format: doc/scenarios.md). */
     nlohmann::json navigationScene(const NavigationConfig &config);
 
