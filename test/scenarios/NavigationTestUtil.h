@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <ompl/util/Console.h>
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -27,6 +28,14 @@ namespace ropras::scenarios::test
     inline const ModelScenario<NavigationModel> &asNav(const Scenario &s)
     {
         return dynamic_cast<const ModelScenario<NavigationModel> &>(s);
+    }
+
+    /** The distance field's leaf value d lattice steps from the goal, with Maze2D's and Random3D's rewards (goal
+        800, step -0.1) and heuristic_decay rho: goal_reward·γ^d·rho^d + step_reward·(1 − γ^d)/(1 − γ). */
+    inline double fieldValue(double g, std::size_t d, double rho = 1.0)
+    {
+        const double gd = std::pow(g, static_cast<double>(d));
+        return 800.0 * gd * std::pow(rho, static_cast<double>(d)) - 0.1 * (1.0 - gd) / (1.0 - g);
     }
 
     inline NavState at(double x, double y, double z = 0.0)

@@ -42,8 +42,7 @@ namespace ropras::scenarios
             const std::size_t n = value.size();
             // Policy iteration: the greedy policy of the current values, its values solved exactly (a sparse system:
             // a chain that stays among cells that never reach the goal converges only as gamma^k under sweeps), until
-            // no action improves by more than a relative 1e-12. From the shortest path's upper bound the first
-            // policy already heads for the goal.
+            // no action improves by more than a relative 1e-12.
             const std::size_t rows = cells.size();
             std::vector<std::int32_t> rowOf(n, -1);
             for (std::size_t i = 0; i < rows; ++i)
@@ -136,13 +135,11 @@ namespace ropras::scenarios
                 continue;
             }
             cells.push_back(static_cast<std::uint32_t>(c));
-            // start from an upper bound: the shortest path of d steps walked for certain (the goal reward comes with
-            // the d-th step, discounted d - 1 times), or never reaching the goal
-            const double d = static_cast<double>(goalDistance_[c]);
-            value[c] = goalDistance_[c] == UNREACHABLE
-                           ? config_.stepReward / (1.0 - gamma)
-                           : config_.goalReward * std::pow(gamma, d - 1.0) +
-                                 config_.stepReward * (1.0 - std::pow(gamma, d)) / (1.0 - gamma);
+            // start from the shortest path's value (slipValue_ is still empty here): the first greedy policy heads
+            // for the goal
+            State at;
+            std::copy(p, p + 3, at.p);
+            value[c] = heuristicValue(at);
             for (int a = 0; a < m; ++a)
             {
                 std::copy(p, p + 3, q);
